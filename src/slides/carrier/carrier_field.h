@@ -1,0 +1,52 @@
+// CarrierField: the carrier gas seen by the particles, sampled per batch of points.
+//
+// The one runtime-polymorphic boundary of the tracker (DESIGN.md): it is called once per batch,
+// never per particle, so the particle loops stay inlinable. Implementations: the analytic jets
+// (carrier/analytic_jet.h, carrier/round_laminar_jet.h); the OpenFOAM field reader follows.
+//
+//     carrier { type analyticJet; analyticJetCoeffs { ... } }
+#pragma once
+
+#include "slides/core/vector.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace slides {
+
+/// What a caller needs from a sample; a carrier fills only what is asked for.
+struct CarrierNeeds {
+    bool velocityGradient = false;
+};
+
+/// One batch of samples, one entry per point, in the order of the points (structure of arrays).
+struct CarrierSample {
+    std::vector<Vec3> velocity;         ///< U [m/s]
+    std::vector<Mat3> velocityGradient; ///< dU_i/dx_j [1/s], filled when needs.velocityGradient
+
+    void resize(std::size_t count, CarrierNeeds needs) {
+        velocity.resize(count);
+        velocityGradient.resize(needs.velocityGradient ? count : 0);
+    }
+};
+
+/// Axis-aligned box [m].
+struct Box {
+    Vec3 min = Vec3::Zero();
+    Vec3 max = Vec3::Zero();
+};
+
+class CarrierField {
+public:
+    virtual ~CarrierField() = default;
+
+    /// Gas state at each point at time t. out is resized to points.size().
+    virtual void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
+                        CarrierSample& out) const = 0;
+
+    /// Short human-readable description for the run summary, e.g. "analyticJet (axisymmetric)".
+    virtual std::string describe() const = 0;
+};
+
+} // namespace slides

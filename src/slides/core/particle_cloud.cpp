@@ -1,0 +1,34 @@
+#include "slides/core/particle_cloud.h"
+
+namespace slides {
+
+void ParticleCloud::reserve(std::size_t count) {
+    id.reserve(count);
+    position.reserve(count);
+    velocity.reserve(count);
+    radius.reserve(count);
+}
+
+void ParticleCloud::add(ParticleId particleId, const Vec3& x, const Vec3& v,
+                        double particleRadius) {
+    id.push_back(particleId);
+    position.push_back(x);
+    velocity.push_back(v);
+    radius.push_back(particleRadius);
+}
+
+void ParticleCloud::removeAt(std::size_t index) {
+    const std::size_t last = size() - 1;
+    if (index != last) {
+        id[index] = id[last];
+        position[index] = position[last];
+        velocity[index] = velocity[last];
+        radius[index] = radius[last];
+    }
+    id.pop_back();
+    position.pop_back();
+    velocity.pop_back();
+    radius.pop_back();
+}
+
+} // namespace slides
