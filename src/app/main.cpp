@@ -1,0 +1,170 @@
+// slides-track: track particles through a carrier-gas field and write the results for ParaView.
+//
+//     slides-track foamCases/analyticSpray            # results in foamCases/analyticSpray/slides/
+//     slides-track CASE --output DIR --dt 1e-5 --threads 2
+// Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
+#include "slides/carrier/make_carrier.h"
+#include "slides/config/scene_keys.h"
+#include "slides/config/scene_reader.h"
+#include "slides/core/error.h"
+#include "slides/integrate/stepper.h"
+#include "slides/io/atomic_file.h"
+#include "slides/io/progress.h"
+#include "slides/io/run_output.h"
+#include "slides/io/summary.h"
+
+#include <CLI/CLI.hpp>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+namespace {
+
+struct Options {
+    std::string caseDirectory;
+    std::string output;
+    std::optional<double> endTime;
+    std::optional<double> dt;
+    int threads = 0;
+    bool quiet = false;
+    bool listKeys = false;
+};
+
+/// Command-line overrides of the dictionary, checked like dictionary values.
+void applyOverrides(const Options& options, slides::Scene& scene) {
+    if (options.endTime) {
+        if (!(*options.endTime > 0))
+            throw slides::InputError("command line", 0, "--end-time", "must be positive");
+        scene.time.endTime = *options.endTime;
+    }
+    if (options.dt) {
+        if (!(*options.dt > 0))
+            throw slides::InputError("command line", 0, "--dt", "must be positive");
+        scene.time.dt = *options.dt;
+    }
+    if (scene.time.dt > scene.time.endTime)
+        throw slides::InputError("command line", 0, "--dt", "is longer than the end time");
+}
+
+void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier, int threads) {
+    const double meanRadius = scene.particles.radius.meanRadius();
+    const double responseTime =
+        slides::stokesResponseTime(scene.particles.density, meanRadius, scene.fluid.density,
+                                   scene.fluid.kinematicViscosity);
+    std::printf("slides-track %s: case %s\n", SLIDES_VERSION, scene.caseDirectory.c_str());
+    std::printf("  carrier    %s\n", carrier.describe().c_str());
+    std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "
+                "time %.3g s\n",
+                scene.particles.count, meanRadius, scene.particles.density, responseTime);
+    std::string integrator;
+    for (const auto& entry : slides::integratorNames())
+        if (entry.integrator == scene.time.integrator) integrator = entry.name;
+    std::printf("  time       dt %.3g s (%.3g response times), end %.3g s, %s, %d thread%s\n",
+                scene.time.dt, scene.time.dt / responseTime, scene.time.endTime,
+                integrator.c_str(), threads, threads == 1 ? "" : "s");
+    if (scene.time.integrator == slides::Integrator::explicitEuler &&
+        scene.time.dt > 2 * responseTime)
+        std::printf("  warning    explicitEuler is unstable for dt > 2 response times; use an "
+                    "exponential integrator\n");
+    std::fflush(stdout);
+}
+
+int run(const Options& options) {
+    slides::Scene scene = slides::readScene(options.caseDirectory);
+    applyOverrides(options, scene);
+    const auto carrier = slides::makeCarrier(scene);
+    const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+    omp_set_num_threads(threads);
+    if (!options.quiet) describeRun(scene, *carrier, threads);
+
+    const auto outputDirectory = options.output.empty()
+                                     ? std::filesystem::path(options.caseDirectory) / "slides"
+                                     : std::filesystem::path(options.output);
+    slides::RunOutput output(outputDirectory, scene, *carrier);
+    slides::Stepper stepper(scene, *carrier);
+    slides::ProgressDisplay progress(stderr, options.quiet);
+
+    const auto start = std::chrono::steady_clock::now();
+    output.writeFrame(stepper);
+    double nextFrame = scene.output.interval;
+    while (!stepper.finished()) {
+        stepper.step();
+        if (stepper.time() >= nextFrame * (1 - 1e-12) || stepper.finished()) {
+            output.writeFrame(stepper);
+            while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
+        }
+        const long done = stepper.injected() - static_cast<long>(stepper.cloud().size());
+        double fraction = stepper.time() / scene.time.endTime;
+        if (scene.time.stopWhenAllDone)
+            fraction = std::max(fraction, static_cast<double>(done) / scene.particles.count);
+        progress.update(fraction, stepper.time(), stepper.cloud().size());
+    }
+    progress.finish();
+    const double wallSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto summary =
+        slides::runSummary(scene, stepper, {wallSeconds, threads, carrier->describe()});
+    output.writeSummary(summary);
+
+    if (!options.quiet) {
+        std::printf("done: t = %.4g s in %ld steps, %.3g s wall, %.3g particle-steps/s\n",
+                    stepper.time(), stepper.steps(), wallSeconds,
+                    summary["performance"]["particleStepsPerSecond"].get<double>());
+        std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
+                    stepper.injected(), stepper.arrivals().size(), stepper.escaped(),
+                    stepper.cloud().size());
+        std::printf("results in %s/ (%d frames)\n  open in ParaView:  paraview %s\n"
+                    "  summary:           %s\n",
+                    output.directory().c_str(), output.frames(),
+                    (output.directory() / "particles.pvd").c_str(),
+                    (output.directory() / "summary.json").c_str());
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"slides-track: Lagrangian particle tracking in a carrier-gas jet.\n"
+                 "CASE holds constant/slidesProperties; results go to CASE/slides/."};
+    Options options;
+    app.add_option("CASE", options.caseDirectory, "case directory")->check(CLI::ExistingDirectory);
+    app.add_option("--output", options.output, "output directory (default CASE/slides)");
+    app.add_option("--end-time", options.endTime, "end time [s], overrides time.endTime");
+    app.add_option("--dt", options.dt, "time step [s], overrides time.dt");
+    app.add_option("--threads", options.threads, "threads (default: all cores)")
+        ->check(CLI::PositiveNumber);
+    app.add_flag("--quiet", options.quiet, "no progress display or report");
+    app.add_flag("--list-keys", options.listKeys,
+                 "print the table of slidesProperties keys (markdown) and exit");
+    app.set_version_flag("--version", std::string("slides-track ") + SLIDES_VERSION);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int status = app.exit(error);
+        return status == 0 ? 0 : 2;
+    }
+    if (options.listKeys) {
+        std::cout << slides::sceneKeysMarkdown();
+        return 0;
+    }
+    if (options.caseDirectory.empty()) {
+        std::cerr << "slides-track: error: no CASE directory given (see --help)\n";
+        return 2;
+    }
+    try {
+        return run(options);
+    } catch (const slides::InputError& error) {
+        std::fprintf(stderr, "\nslides-track: error: %s\n", error.what());
+        return 2;
+    } catch (const slides::OutputError& error) {
+        std::fprintf(stderr, "\nslides-track: error: %s\n", error.what());
+        return 2;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "\nslides-track: internal error: %s\n", error.what());
+        return 1;
+    }
+}

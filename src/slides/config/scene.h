@@ -1,0 +1,126 @@
+// Scene: the typed, validated configuration of one run, built from constant/slidesProperties.
+//
+// Every field is in SI units and already checked (config/scene_reader.cpp); the key table that
+// documents each dictionary entry is config/scene_keys.cpp (`slides-track --list-keys`).
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/core/vector.h"
+#include "slides/integrate/integrator.h"
+#include "slides/physics/drag.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slides {
+
+struct FluidSettings {
+    double density = 0;            ///< ρf [kg/m³]
+    double kinematicViscosity = 0; ///< ν [m²/s]
+    double temperature = 0;        ///< [K]
+};
+
+struct NozzleSettings {
+    Vec3 centre = Vec3::Zero();
+    Vec3 axis = Vec3::UnitX();               ///< unit, jet direction
+    double radius = 0;                       ///< [m]
+    Vec3 crossSpanDirection = Vec3::UnitY(); ///< unit, ⟂ axis: the y of a planar jet
+};
+
+enum class CarrierType { analyticJet, roundLaminarJet };
+enum class JetProfileKind { planar, axisymmetric };
+
+struct CarrierSettings {
+    CarrierType type = CarrierType::analyticJet;
+    JetProfileKind profile = JetProfileKind::axisymmetric; ///< analyticJet only
+    double nozzleVelocity = 0;                             ///< U0 [m/s]
+    double coreLength = 0;                                 ///< unentrained core [m]
+    double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
+    std::optional<double> C1, C2, C3; ///< Eq. 5.10/5.11 coefficients when given explicitly
+};
+
+enum class RadiusDistributionKind { fixed, normal, logNormal };
+
+struct RadiusDistribution {
+    RadiusDistributionKind kind = RadiusDistributionKind::fixed;
+    double value = 0;  ///< fixed radius [m]
+    double mean = 0;   ///< normal: mean radius [m]
+    double standardDeviation = 0; ///< normal [m]
+    double median = 0; ///< logNormal: median radius [m]
+    double geometricStandardDeviation = 1; ///< logNormal: e^σ of ln R (≥ 1)
+    double minimum = 0; ///< draws below are redrawn [m]
+    double maximum = 0; ///< draws above are redrawn [m]
+    double meanRadius() const; ///< expected value of the (untruncated) distribution [m]
+};
+
+/// Elastic and adhesive properties (Table 5.2); read and checked now, used by the collision
+/// and deposition models.
+struct MaterialSettings {
+    double bulkModulus = 0;   ///< [Pa]
+    double shearModulus = 0;  ///< [Pa]
+    double yieldStress = 0;   ///< [Pa]
+    double surfaceEnergy = 0; ///< [J/m²]
+};
+
+struct ParticleSettings {
+    long count = 0;
+    double density = 0; ///< ρp [kg/m³]
+    RadiusDistribution radius;
+    MaterialSettings material;
+};
+
+enum class InjectionMode { rate, allAtStart };
+
+struct InjectionSettings {
+    InjectionMode mode = InjectionMode::rate;
+    double rate = 0;           ///< particles per second (mode rate)
+    double crossSpanSpeed = 0; ///< magnitude of the random velocity ⟂ axis [m/s]
+    std::uint64_t seed = 1;
+};
+
+struct PhysicsSettings {
+    DragModel drag = DragModel::haiderLevenspiel;
+    Vec3 gravity = Vec3::Zero(); ///< [m/s²]
+    bool buoyancy = true;
+};
+
+struct TimeSettings {
+    double dt = 0;      ///< [s]
+    double endTime = 0; ///< [s]; the run also stops earlier when stopWhenAllDone
+    bool stopWhenAllDone = true; ///< stop once every particle has arrived or escaped
+    Integrator integrator = Integrator::exponentialMidpoint;
+};
+
+/// A plane that records the particles reaching it (deposition physics comes later).
+struct PlaneSurface {
+    std::string name;
+    Vec3 point = Vec3::Zero();
+    Vec3 normal = Vec3::UnitX(); ///< unit, pointing into the gas side
+    MaterialSettings material;
+};
+
+struct OutputSettings {
+    double interval = 0;                       ///< [s] between particle frames
+    std::array<int, 3> carrierResolution{};    ///< lattice points of carrier.vti per axis
+};
+
+struct Scene {
+    std::filesystem::path caseDirectory;
+    std::filesystem::path dictionaryFile;
+    FluidSettings fluid;
+    NozzleSettings nozzle;
+    CarrierSettings carrier;
+    ParticleSettings particles;
+    InjectionSettings injection;
+    PhysicsSettings physics;
+    TimeSettings time;
+    std::vector<PlaneSurface> surfaces;
+    Box domain; ///< particles leaving this box have escaped
+    OutputSettings output;
+};
+
+} // namespace slides

@@ -1,0 +1,225 @@
+#include "slides/config/scene_keys.h"
+
+#include "slides/integrate/integrator.h"
+#include "slides/physics/drag.h"
+
+#include <sstream>
+
+namespace slides {
+
+namespace {
+
+template <typename Table> std::vector<std::string> namesOf(const Table& table) {
+    std::vector<std::string> names;
+    for (const auto& entry : table) names.emplace_back(entry.name);
+    return names;
+}
+
+std::vector<KeyDeclaration> declareKeys() {
+    using K = KeyKind;
+    using R = KeyRange;
+    std::vector<KeyDeclaration> keys = {
+        {"carrier", K::dictionary, "-", "", {}, R::any, "The carrier gas field."},
+        {"carrier.type", K::word, "-", "analyticJet", {"analyticJet", "roundLaminarJet"}, R::any,
+         "analyticJet: sech² jet of Eq. 5.10/5.11; roundLaminarJet: Schlichting's exact round "
+         "laminar jet."},
+        {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
+        {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
+         {"planar", "axisymmetric"}, R::any,
+         "planar: Bickley's plane jet across nozzle.crossSpanDirection; axisymmetric: the same "
+         "profile with y replaced by the radius (the reference's 3-D use)."},
+        {"carrier.analyticJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
+         "Exit velocity U0; the virtual origin puts U0 on the centreline at the core end."},
+        {"carrier.analyticJetCoeffs.coreLength", K::scalar, "m", "0", {}, R::nonNegative,
+         "Length of the unentrained core after the nozzle (profile frozen, no entrainment)."},
+        {"carrier.analyticJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
+         R::positive,
+         "Viscosity that sets the spreading rate (e.g. an eddy viscosity for a turbulent jet); "
+         "default fluid.kinematicViscosity."},
+        {"carrier.analyticJetCoeffs.C1", K::scalar, "m^(4/3)/s", "-", {}, R::positive,
+         "Eq. 5.10 amplitude; with C3, replaces the values derived from the nozzle."},
+        {"carrier.analyticJetCoeffs.C2", K::scalar, "m^(5/3)/s", "-", {}, R::positive,
+         "Eq. 5.11 amplitude; continuity fixes it to C1/(3 C3), so it may only repeat that."},
+        {"carrier.analyticJetCoeffs.C3", K::scalar, "m^(-1/3)", "-", {}, R::positive,
+         "Eq. 5.10 similarity scale; given together with C1."},
+        {"carrier.roundLaminarJetCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Coefficients of Schlichting's round laminar jet."},
+        {"carrier.roundLaminarJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
+         "Exit velocity U0 of the round nozzle."},
+        {"carrier.roundLaminarJetCoeffs.coreLength", K::scalar, "m", "0", {}, R::nonNegative,
+         "Length of the unentrained core after the nozzle."},
+        {"carrier.roundLaminarJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
+         R::positive, "Viscosity that sets the spreading rate; default fluid.kinematicViscosity."},
+
+        {"fluid", K::dictionary, "-", "", {}, R::any, "Carrier gas properties."},
+        {"fluid.density", K::scalar, "kg/m^3", "", {}, R::positive, "Gas density ρf."},
+        {"fluid.kinematicViscosity", K::scalar, "m^2/s", "", {}, R::positive,
+         "Gas kinematic viscosity ν."},
+        {"fluid.temperature", K::scalar, "K", "293.15", {}, R::positive, "Gas temperature."},
+
+        {"nozzle", K::dictionary, "-", "", {}, R::any, "The nozzle the gas and particles leave."},
+        {"nozzle.centre", K::vector, "m", "(0 0 0)", {}, R::any, "Centre of the nozzle exit."},
+        {"nozzle.axis", K::vector, "-", "(1 0 0)", {}, R::any,
+         "Jet direction (normalised on reading)."},
+        {"nozzle.radius", K::scalar, "m", "", {}, R::positive,
+         "Nozzle radius (half-width of a planar slot)."},
+        {"nozzle.crossSpanDirection", K::vector, "-", "(0 1 0)", {}, R::any,
+         "Cross-span direction y of a planar jet; its part along the axis is removed."},
+
+        {"particles", K::dictionary, "-", "", {}, R::any, "The particles."},
+        {"particles.count", K::integer, "-", "", {}, R::positive, "Number of particles."},
+        {"particles.density", K::scalar, "kg/m^3", "", {}, R::positive,
+         "Particle material density ρp."},
+        {"particles.radiusDistribution", K::dictionary, "-", "", {}, R::any,
+         "Particle radius distribution."},
+        {"particles.radiusDistribution.type", K::word, "-", "fixed",
+         {"fixed", "normal", "logNormal"}, R::any,
+         "fixed: value; normal: mean, standardDeviation; logNormal: median, "
+         "geometricStandardDeviation."},
+        {"particles.radiusDistribution.value", K::scalar, "m", "-", {}, R::positive,
+         "Radius for type fixed."},
+        {"particles.radiusDistribution.mean", K::scalar, "m", "-", {}, R::positive,
+         "Mean radius for type normal."},
+        {"particles.radiusDistribution.standardDeviation", K::scalar, "m", "-", {},
+         R::nonNegative, "Standard deviation for type normal."},
+        {"particles.radiusDistribution.median", K::scalar, "m", "-", {}, R::positive,
+         "Median radius for type logNormal."},
+        {"particles.radiusDistribution.geometricStandardDeviation", K::scalar, "-", "-", {},
+         R::atLeastOne, "e^σ of ln R for type logNormal."},
+        {"particles.radiusDistribution.minimum", K::scalar, "m", "0", {}, R::nonNegative,
+         "Draws below this are redrawn."},
+        {"particles.radiusDistribution.maximum", K::scalar, "m", "-", {}, R::positive,
+         "Draws above this are redrawn (default: no limit)."},
+        {"particles.material", K::dictionary, "-", "-", {}, R::any,
+         "Elastic and adhesive properties (Table 5.2), for collision and deposition models."},
+        {"particles.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,
+         "Bulk modulus."},
+        {"particles.material.shearModulus", K::scalar, "Pa", "-", {}, R::positive,
+         "Shear modulus."},
+        {"particles.material.yieldStress", K::scalar, "Pa", "-", {}, R::positive,
+         "Yield stress."},
+        {"particles.material.surfaceEnergy", K::scalar, "J/m^2", "-", {}, R::positive,
+         "Surface energy γ (Eq. 2.74)."},
+
+        {"injection", K::dictionary, "-", "", {}, R::any,
+         "Particles start on the nozzle disc with the local gas velocity plus a random "
+         "cross-span velocity."},
+        {"injection.mode", K::word, "-", "rate", {"rate", "allAtStart"}, R::any,
+         "rate: one particle every 1/rate seconds; allAtStart: all at t = 0."},
+        {"injection.rate", K::scalar, "1/s", "-", {}, R::positive,
+         "Particles injected per second (mode rate)."},
+        {"injection.crossSpanSpeed", K::scalar, "m/s", "0", {}, R::nonNegative,
+         "Magnitude of the random velocity perpendicular to the axis, random direction."},
+        {"injection.seed", K::integer, "-", "1", {}, R::nonNegative,
+         "Seed of the counter-based random numbers."},
+
+        {"physics", K::dictionary, "-", "-", {}, R::any, "Forces on the particles."},
+        {"physics.drag", K::word, "-", "haiderLevenspiel", namesOf(dragModelNames()), R::any,
+         "Drag law (Eq. 3.17 for haiderLevenspiel)."},
+        {"physics.gravity", K::vector, "m/s^2", "(0 0 0)", {}, R::any,
+         "Gravitational acceleration."},
+        {"physics.buoyancy", K::boolean, "-", "on", {}, R::any,
+         "Subtract the displaced gas's weight, (m − mf) g of Eq. 3.16."},
+
+        {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
+        {"time.dt", K::scalar, "s", "", {}, R::positive, "Time step."},
+        {"time.endTime", K::scalar, "s", "", {}, R::positive, "Latest end of the run."},
+        {"time.stopWhenAllDone", K::boolean, "-", "yes", {}, R::any,
+         "Stop before endTime once every particle is injected and has arrived or escaped."},
+        {"time.integrator", K::word, "-", "exponentialMidpoint", namesOf(integratorNames()),
+         R::any, "Time integrator (integrate/integrator.h)."},
+
+        {"surfaces", K::dictionary, "-", "", {}, R::any,
+         "Named surfaces; particles reaching one are recorded there."},
+        {"surfaces.*", K::dictionary, "-", "-", {}, R::any, "One surface, named by its key."},
+        {"surfaces.*.type", K::word, "-", "plane", {"plane"}, R::any, "Surface shape."},
+        {"surfaces.*.point", K::vector, "m", "", {}, R::any, "A point on the plane."},
+        {"surfaces.*.normal", K::vector, "-", "", {}, R::any,
+         "Plane normal pointing into the gas (normalised on reading)."},
+        {"surfaces.*.material", K::dictionary, "-", "-", {}, R::any,
+         "Surface properties (Table 5.2), for deposition models."},
+        {"surfaces.*.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,
+         "Bulk modulus."},
+        {"surfaces.*.material.shearModulus", K::scalar, "Pa", "-", {}, R::positive,
+         "Shear modulus."},
+        {"surfaces.*.material.yieldStress", K::scalar, "Pa", "-", {}, R::positive,
+         "Yield stress."},
+        {"surfaces.*.material.surfaceEnergy", K::scalar, "J/m^2", "-", {}, R::positive,
+         "Surface energy γ."},
+
+        {"domain", K::dictionary, "-", "", {}, R::any, "Particles leaving this box escape."},
+        {"domain.min", K::vector, "m", "", {}, R::any, "Lower corner."},
+        {"domain.max", K::vector, "m", "", {}, R::any, "Upper corner."},
+
+        {"output", K::dictionary, "-", "", {}, R::any, "What is written to CASE/slides/."},
+        {"output.interval", K::scalar, "s", "", {}, R::positive,
+         "Time between particle frames (particles_NNNNNN.vtp)."},
+        {"output.carrierResolution", K::integerTriple, "-", "(96 48 48)", {}, R::atLeastOne,
+         "Lattice points per axis of carrier.vti over the domain."},
+    };
+    return keys;
+}
+
+} // namespace
+
+bool keyPathMatches(std::string_view pattern, std::string_view path) {
+    while (true) {
+        const auto patternDot = pattern.find('.');
+        const auto pathDot = path.find('.');
+        const auto patternHead = pattern.substr(0, patternDot);
+        const auto pathHead = path.substr(0, pathDot);
+        if (patternHead != "*" && patternHead != pathHead) return false;
+        if (patternDot == std::string_view::npos || pathDot == std::string_view::npos)
+            return patternDot == pathDot;
+        pattern.remove_prefix(patternDot + 1);
+        path.remove_prefix(pathDot + 1);
+    }
+}
+
+namespace {
+
+std::string kindName(const KeyDeclaration& key) {
+    switch (key.kind) {
+    case KeyKind::dictionary: return "dictionary";
+    case KeyKind::scalar: return "scalar";
+    case KeyKind::integer: return "integer";
+    case KeyKind::word: return "word";
+    case KeyKind::boolean: return "switch";
+    case KeyKind::vector: return "vector";
+    case KeyKind::integerTriple: return "3 integers";
+    }
+    return "";
+}
+
+} // namespace
+
+const std::vector<KeyDeclaration>& sceneKeys() {
+    static const std::vector<KeyDeclaration> keys = declareKeys();
+    return keys;
+}
+
+const KeyDeclaration* findSceneKey(std::string_view path) {
+    for (const auto& key : sceneKeys())
+        if (keyPathMatches(key.path, path)) return &key;
+    return nullptr;
+}
+
+std::string sceneKeysMarkdown() {
+    std::ostringstream table;
+    table << "| key | type | unit | default | description |\n|---|---|---|---|---|\n";
+    for (const auto& key : sceneKeys()) {
+        std::string type = kindName(key);
+        if (!key.allowed.empty()) {
+            type.clear();
+            for (const auto& name : key.allowed) type += (type.empty() ? "" : " \\| ") + name;
+        }
+        const std::string fallback =
+            key.required() ? "required" : key.optional() ? "—" : "`" + key.fallback + "`";
+        table << "| `" << key.path << "` | " << type << " | " << key.unit << " | " << fallback
+              << " | " << key.doc << " |\n";
+    }
+    return table.str();
+}
+
+} // namespace slides

@@ -1,0 +1,365 @@
+#include "slides/config/scene_reader.h"
+
+#include "slides/config/dictionary.h"
+#include "slides/config/scene_keys.h"
+#include "slides/core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace slides {
+
+namespace {
+
+/// Reads values by dotted path, applying the declared default, range and allowed words.
+class KeyReader {
+public:
+    explicit KeyReader(const Dictionary& top) : top_(top) {}
+
+    bool has(const std::string& path) const {
+        std::string leaf;
+        const Dictionary* parent = parentOf(path, leaf);
+        return parent && parent->has(leaf);
+    }
+
+    double scalar(const std::string& path) const {
+        const double value = read(path, [](const Dictionary& d, const std::string& key) {
+            return d.scalar(key);
+        });
+        checkRange(path, value);
+        return value;
+    }
+
+    std::optional<double> optionalScalar(const std::string& path) const {
+        if (!has(path)) return std::nullopt;
+        return scalar(path);
+    }
+
+    long integer(const std::string& path) const {
+        const long value = read(path, [](const Dictionary& d, const std::string& key) {
+            return d.integer(key);
+        });
+        checkRange(path, static_cast<double>(value));
+        return value;
+    }
+
+    bool boolean(const std::string& path) const {
+        return read(path, [](const Dictionary& d, const std::string& key) {
+            return d.boolean(key);
+        });
+    }
+
+    Vec3 vector(const std::string& path) const {
+        return read(path, [](const Dictionary& d, const std::string& key) {
+            return Vec3(d.vector(key));
+        });
+    }
+
+    /// A vector normalised to unit length; a zero vector is an error.
+    Vec3 direction(const std::string& path) const {
+        const Vec3 value = vector(path);
+        if (!(value.norm() > 0)) fail(path, "a direction must not be the zero vector");
+        return value.normalized();
+    }
+
+    std::array<int, 3> integerTriple(const std::string& path) const {
+        const auto values = read(path, [](const Dictionary& d, const std::string& key) {
+            return d.scalarList(key);
+        });
+        if (values.size() != 3) fail(path, "expected 3 integers, found " +
+                                               std::to_string(values.size()) + " values");
+        std::array<int, 3> triple{};
+        for (int axis = 0; axis < 3; ++axis) {
+            if (values[axis] != std::round(values[axis]) || values[axis] > 1e6)
+                fail(path, "expected whole numbers of at most 1e6");
+            triple[axis] = static_cast<int>(values[axis]);
+            checkRange(path, triple[axis]);
+        }
+        return triple;
+    }
+
+    /// The word at path, which must be one of the declared allowed names.
+    std::string word(const std::string& path) const {
+        const std::string value = read(path, [](const Dictionary& d, const std::string& key) {
+            return d.word(key);
+        });
+        const KeyDeclaration& key = declaration(path);
+        if (!key.allowed.empty() &&
+            std::find(key.allowed.begin(), key.allowed.end(), value) == key.allowed.end()) {
+            std::string valid;
+            for (const auto& name : key.allowed) valid += "\n    " + name;
+            fail(path, "unknown " + leafOf(path) + " '" + value + "'; valid " + leafOf(path) +
+                           " names are:" + valid);
+        }
+        return value;
+    }
+
+    /// Throws an InputError located at the key if present, else at its nearest parent.
+    [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+        std::string leaf;
+        const Dictionary* parent = parentOf(path, leaf);
+        if (parent) parent->fail(leaf, message);
+        throw InputError(top_.file(), 0, path, message);
+    }
+
+    /// A required key that the scene needs only in some configurations.
+    void require(const std::string& path, const std::string& because) const {
+        if (!has(path)) {
+            const auto& key = declaration(path);
+            fail(path, "missing key (" + key.unit + "), needed " + because + ": " + key.doc);
+        }
+    }
+
+    /// Every key in the file must be declared; sub-dictionaries must be dictionaries.
+    void checkKnownKeys(const Dictionary& dictionary) const {
+        for (const auto& key : dictionary.keys()) {
+            const std::string path = dictionary.keyPath(key);
+            const KeyDeclaration* declared = findSceneKey(path);
+            if (!declared) dictionary.fail(key, "unknown key; valid keys here are:" +
+                                                    validKeysIn(dictionary.path()));
+            const bool wantsDictionary = declared->kind == KeyKind::dictionary;
+            if (wantsDictionary && !dictionary.isDict(key))
+                dictionary.fail(key, "expected a dictionary { ... }");
+            if (!wantsDictionary && dictionary.isDict(key))
+                dictionary.fail(key, "expected a value, found a dictionary");
+            if (wantsDictionary) checkKnownKeys(dictionary.subDict(key));
+        }
+    }
+
+private:
+    template <typename Reader> auto read(const std::string& path, Reader reader) const {
+        const KeyDeclaration& key = declaration(path);
+        std::string leaf;
+        if (const Dictionary* parent = parentOf(path, leaf); parent && parent->has(leaf))
+            return reader(*parent, leaf);
+        if (key.required())
+            fail(path, "missing required key (" + key.unit + "): " + key.doc);
+        if (key.optional())
+            throw std::logic_error("optional key read without a presence check: " + path);
+        const Dictionary fallback =
+            Dictionary::parseString("value " + key.fallback + ";", "default of " + path);
+        return reader(fallback, "value");
+    }
+
+    const KeyDeclaration& declaration(const std::string& path) const {
+        const KeyDeclaration* key = findSceneKey(path);
+        if (!key) throw std::logic_error("key not in the key table: " + path);
+        return *key;
+    }
+
+    void checkRange(const std::string& path, double value) const {
+        switch (declaration(path).range) {
+        case KeyRange::any:
+            if (!std::isfinite(value)) fail(path, "must be a finite number");
+            return;
+        case KeyRange::positive:
+            if (!(value > 0) || !std::isfinite(value)) fail(path, "must be a positive number");
+            return;
+        case KeyRange::nonNegative:
+            if (!(value >= 0) || !std::isfinite(value)) fail(path, "must not be negative");
+            return;
+        case KeyRange::atLeastOne:
+            if (!(value >= 1) || !std::isfinite(value)) fail(path, "must be at least 1");
+            return;
+        }
+    }
+
+    /// The dictionary holding the last component of path (nullptr if a parent is missing).
+    const Dictionary* parentOf(const std::string& path, std::string& leaf) const {
+        const Dictionary* dictionary = &top_;
+        std::size_t start = 0;
+        for (std::size_t dot = path.find('.'); dot != std::string::npos;
+             start = dot + 1, dot = path.find('.', start)) {
+            const std::string part = path.substr(start, dot - start);
+            if (!dictionary->has(part) || !dictionary->isDict(part)) return nullptr;
+            dictionary = &dictionary->subDict(part);
+        }
+        leaf = path.substr(start);
+        return dictionary;
+    }
+
+    static std::string leafOf(const std::string& path) { return path.substr(path.rfind('.') + 1); }
+
+    static std::string validKeysIn(const std::string& dictionaryPath) {
+        std::string valid;
+        for (const auto& key : sceneKeys()) {
+            const auto dot = key.path.rfind('.');
+            const std::string parent = dot == std::string::npos ? "" : key.path.substr(0, dot);
+            const std::string leaf = key.path.substr(dot + 1);
+            if (keyPathMatches(parent, dictionaryPath))
+                valid += "\n    " + (leaf == "*" ? std::string("<any name>") : leaf);
+        }
+        return valid.empty() ? " (none)" : valid;
+    }
+
+    const Dictionary& top_;
+};
+
+RadiusDistribution readRadiusDistribution(const KeyReader& keys) {
+    const std::string base = "particles.radiusDistribution.";
+    RadiusDistribution radius;
+    const std::string type = keys.word(base + "type");
+    radius.minimum = keys.scalar(base + "minimum");
+    radius.maximum = keys.optionalScalar(base + "maximum").value_or(INFINITY);
+    if (type == "fixed") {
+        keys.require(base + "value", "for type fixed");
+        radius.kind = RadiusDistributionKind::fixed;
+        radius.value = keys.scalar(base + "value");
+    } else if (type == "normal") {
+        keys.require(base + "mean", "for type normal");
+        keys.require(base + "standardDeviation", "for type normal");
+        radius.kind = RadiusDistributionKind::normal;
+        radius.mean = keys.scalar(base + "mean");
+        radius.standardDeviation = keys.scalar(base + "standardDeviation");
+    } else {
+        keys.require(base + "median", "for type logNormal");
+        keys.require(base + "geometricStandardDeviation", "for type logNormal");
+        radius.kind = RadiusDistributionKind::logNormal;
+        radius.median = keys.scalar(base + "median");
+        radius.geometricStandardDeviation = keys.scalar(base + "geometricStandardDeviation");
+    }
+    if (!(radius.minimum < radius.maximum))
+        keys.fail(base + "maximum", "must be larger than minimum");
+    const double typical = radius.meanRadius();
+    if (!(typical > radius.minimum && typical < radius.maximum))
+        keys.fail(base + "type", "the distribution's mean radius " + std::to_string(typical) +
+                                     " m lies outside [minimum, maximum]");
+    return radius;
+}
+
+MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
+    MaterialSettings material;
+    material.bulkModulus = keys.optionalScalar(base + ".bulkModulus").value_or(0);
+    material.shearModulus = keys.optionalScalar(base + ".shearModulus").value_or(0);
+    material.yieldStress = keys.optionalScalar(base + ".yieldStress").value_or(0);
+    material.surfaceEnergy = keys.optionalScalar(base + ".surfaceEnergy").value_or(0);
+    return material;
+}
+
+CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
+    CarrierSettings carrier;
+    const std::string type = keys.word("carrier.type");
+    const std::string coeffs = "carrier." + type + "Coeffs";
+    keys.require(coeffs, "for carrier type " + type);
+    carrier.type = type == "analyticJet" ? CarrierType::analyticJet : CarrierType::roundLaminarJet;
+    carrier.nozzleVelocity = keys.scalar(coeffs + ".nozzleVelocity");
+    carrier.coreLength = keys.scalar(coeffs + ".coreLength");
+    carrier.viscosity =
+        keys.optionalScalar(coeffs + ".effectiveViscosity").value_or(fluid.kinematicViscosity);
+    if (carrier.type == CarrierType::analyticJet) {
+        carrier.profile = keys.word(coeffs + ".profile") == "planar" ? JetProfileKind::planar
+                                                                     : JetProfileKind::axisymmetric;
+        carrier.C1 = keys.optionalScalar(coeffs + ".C1");
+        carrier.C2 = keys.optionalScalar(coeffs + ".C2");
+        carrier.C3 = keys.optionalScalar(coeffs + ".C3");
+        if (carrier.C1.has_value() != carrier.C3.has_value())
+            keys.fail(coeffs + (carrier.C1 ? ".C1" : ".C3"), "give C1 and C3 together");
+        if (carrier.C2 && !carrier.C1)
+            keys.fail(coeffs + ".C2", "C2 follows from C1 and C3; give those too");
+        if (carrier.C2 && std::abs(*carrier.C2 - *carrier.C1 / (3 * *carrier.C3)) >
+                              1e-9 * std::abs(*carrier.C2))
+            keys.fail(coeffs + ".C2", "continuity of Eq. 5.10/5.11 requires C2 = C1/(3 C3) = " +
+                                          std::to_string(*carrier.C1 / (3 * *carrier.C3)));
+    }
+    return carrier;
+}
+
+} // namespace
+
+double RadiusDistribution::meanRadius() const {
+    switch (kind) {
+    case RadiusDistributionKind::fixed: return value;
+    case RadiusDistributionKind::normal: return mean;
+    case RadiusDistributionKind::logNormal: {
+        const double sigma = std::log(geometricStandardDeviation);
+        return median * std::exp(0.5 * sigma * sigma);
+    }
+    }
+    return value;
+}
+
+Scene sceneFromDictionary(const Dictionary& dictionary,
+                          const std::filesystem::path& caseDirectory) {
+    const KeyReader keys(dictionary);
+    keys.checkKnownKeys(dictionary);
+
+    Scene scene;
+    scene.caseDirectory = caseDirectory;
+    scene.dictionaryFile = dictionary.file();
+
+    scene.fluid.density = keys.scalar("fluid.density");
+    scene.fluid.kinematicViscosity = keys.scalar("fluid.kinematicViscosity");
+    scene.fluid.temperature = keys.scalar("fluid.temperature");
+
+    scene.nozzle.centre = keys.vector("nozzle.centre");
+    scene.nozzle.axis = keys.direction("nozzle.axis");
+    scene.nozzle.radius = keys.scalar("nozzle.radius");
+    const Vec3 crossSpan = keys.vector("nozzle.crossSpanDirection");
+    const Vec3 perpendicular = crossSpan - crossSpan.dot(scene.nozzle.axis) * scene.nozzle.axis;
+    if (!(perpendicular.norm() > 1e-6 * crossSpan.norm()))
+        keys.fail("nozzle.crossSpanDirection", "must not be parallel to nozzle.axis");
+    scene.nozzle.crossSpanDirection = perpendicular.normalized();
+
+    scene.carrier = readCarrier(keys, scene.fluid);
+
+    scene.particles.count = keys.integer("particles.count");
+    scene.particles.density = keys.scalar("particles.density");
+    scene.particles.radius = readRadiusDistribution(keys);
+    scene.particles.material = readMaterial(keys, "particles.material");
+
+    scene.injection.mode =
+        keys.word("injection.mode") == "rate" ? InjectionMode::rate : InjectionMode::allAtStart;
+    if (scene.injection.mode == InjectionMode::rate) {
+        keys.require("injection.rate", "for injection mode rate");
+        scene.injection.rate = keys.scalar("injection.rate");
+    }
+    scene.injection.crossSpanSpeed = keys.scalar("injection.crossSpanSpeed");
+    scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
+
+    const std::string drag = keys.word("physics.drag");
+    for (const auto& entry : dragModelNames())
+        if (entry.name == drag) scene.physics.drag = entry.model;
+    scene.physics.gravity = keys.vector("physics.gravity");
+    scene.physics.buoyancy = keys.boolean("physics.buoyancy");
+
+    scene.time.dt = keys.scalar("time.dt");
+    scene.time.endTime = keys.scalar("time.endTime");
+    if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
+    scene.time.stopWhenAllDone = keys.boolean("time.stopWhenAllDone");
+    const std::string integrator = keys.word("time.integrator");
+    for (const auto& entry : integratorNames())
+        if (entry.name == integrator) scene.time.integrator = entry.integrator;
+
+    const Dictionary& surfaces = dictionary.subDict("surfaces");
+    for (const auto& name : surfaces.keys()) {
+        const std::string base = "surfaces." + name;
+        PlaneSurface plane;
+        plane.name = name;
+        keys.word(base + ".type");
+        plane.point = keys.vector(base + ".point");
+        plane.normal = keys.direction(base + ".normal");
+        plane.material = readMaterial(keys, base + ".material");
+        scene.surfaces.push_back(plane);
+    }
+
+    scene.domain.min = keys.vector("domain.min");
+    scene.domain.max = keys.vector("domain.max");
+    if (!(scene.domain.min.array() < scene.domain.max.array()).all())
+        keys.fail("domain.max", "must exceed domain.min in every component");
+    const Vec3& nozzle = scene.nozzle.centre;
+    if (!((nozzle.array() > scene.domain.min.array()).all() &&
+          (nozzle.array() < scene.domain.max.array()).all()))
+        keys.fail("nozzle.centre", "lies outside the domain box");
+
+    scene.output.interval = keys.scalar("output.interval");
+    scene.output.carrierResolution = keys.integerTriple("output.carrierResolution");
+    return scene;
+}
+
+Scene readScene(const std::filesystem::path& caseDirectory) {
+    const auto file = caseDirectory / "constant" / "slidesProperties";
+    return sceneFromDictionary(Dictionary::parseFile(file), caseDirectory);
+}
+
+} // namespace slides

@@ -1,0 +1,68 @@
+#include "slides/integrate/injector.h"
+
+#include "slides/core/random.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace slides {
+
+double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, ParticleId id) {
+    if (distribution.kind == RadiusDistributionKind::fixed) return distribution.value;
+    RandomStream random(seed, id, RandomPurpose::radius);
+    const double sigma = std::log(distribution.geometricStandardDeviation);
+    // The reader guarantees the mean lies inside [minimum, maximum], so redraws terminate.
+    while (true) {
+        const double deviate = random.normal();
+        const double radius =
+            distribution.kind == RadiusDistributionKind::normal
+                ? distribution.mean + distribution.standardDeviation * deviate
+                : distribution.median * std::exp(sigma * deviate);
+        if (radius > distribution.minimum && radius < distribution.maximum && radius > 0)
+            return radius;
+    }
+}
+
+Injector::Injector(const Scene& scene) : scene_(scene) {}
+
+double Injector::injectionTime(ParticleId id) const {
+    return scene_.injection.mode == InjectionMode::rate
+               ? static_cast<double>(id) / scene_.injection.rate
+               : 0.0;
+}
+
+void Injector::injectUntil(double until, double time, const CarrierField& carrier,
+                           ParticleCloud& cloud) {
+    const long first = injected_;
+    long last = first;
+    while (last < scene_.particles.count && injectionTime(static_cast<ParticleId>(last)) < until)
+        ++last;
+    if (last == first) return;
+
+    const NozzleSettings& nozzle = scene_.nozzle;
+    const Vec3 across = nozzle.crossSpanDirection;
+    const Vec3 other = nozzle.axis.cross(across);
+    const auto count = static_cast<std::size_t>(last - first);
+    positions_.resize(count);
+    crossSpanVelocities_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto id = static_cast<ParticleId>(first) + k;
+        RandomStream random(scene_.injection.seed, id, RandomPurpose::injection);
+        const double radialFraction = std::sqrt(random.uniform()); // uniform in disc area
+        const double angle = 2.0 * std::numbers::pi * random.uniform();
+        const double direction = 2.0 * std::numbers::pi * random.uniform();
+        positions_[k] = nozzle.centre + nozzle.radius * radialFraction *
+                                            (std::cos(angle) * across + std::sin(angle) * other);
+        crossSpanVelocities_[k] = scene_.injection.crossSpanSpeed *
+                               (std::cos(direction) * across + std::sin(direction) * other);
+    }
+    carrier.sample(positions_, time, CarrierNeeds{}, gas_);
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto id = static_cast<ParticleId>(first) + k;
+        cloud.add(id, positions_[k], gas_.velocity[k] + crossSpanVelocities_[k],
+                  drawRadius(scene_.particles.radius, scene_.injection.seed, id));
+    }
+    injected_ = last;
+}
+
+} // namespace slides

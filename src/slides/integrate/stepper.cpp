@@ -1,0 +1,129 @@
+#include "slides/integrate/stepper.h"
+
+#include "slides/physics/body_force.h"
+#include "slides/surfaces/plane_contact.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace slides {
+
+Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
+    : scene_(scene), carrier_(carrier),
+      drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,
+            scene.particles.density},
+      bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
+                                         scene.fluid.density, scene.physics.buoyancy)),
+      injector_(scene) {
+    cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
+}
+
+bool Stepper::finished() const {
+    const double endTime = scene_.time.endTime;
+    if (time_ >= endTime * (1 - 1e-12)) return true;
+    return scene_.time.stopWhenAllDone && injector_.finished() && cloud_.empty();
+}
+
+void Stepper::step() {
+    const double h = std::min(scene_.time.dt, scene_.time.endTime - time_);
+    injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
+    particleSteps_ += cloud_.size();
+    startPositions_ = cloud_.position;
+    startVelocities_ = cloud_.velocity;
+    advance(h);
+    meetSurfaces(h);
+    time_ += h;
+    ++steps_;
+}
+
+void Stepper::advance(double h) {
+    const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
+    auto& x = cloud_.position;
+    auto& v = cloud_.velocity;
+    const auto& radius = cloud_.radius;
+    const Vec3 a = bodyAcceleration_;
+    carrier_.sample(x, time_, CarrierNeeds{}, gas_);
+    const auto& u = gas_.velocity;
+
+    switch (scene_.time.integrator) {
+    case Integrator::explicitEuler:
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
+            advanceExplicitly(x[i], v[i], u[i], tau, a, h);
+        }
+        break;
+    case Integrator::exponentialEuler:
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
+            relaxExactly(x[i], v[i], u[i], tau, a, h);
+        }
+        break;
+    case Integrator::exponentialMidpoint: {
+        // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
+        // whole step with u and τ frozen at their midpoint values (second order).
+        midpointPositions_ = x;
+        midpointVelocities_ = v;
+        auto& xm = midpointPositions_;
+        auto& vm = midpointVelocities_;
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
+            relaxExactly(xm[i], vm[i], u[i], tau, a, 0.5 * h);
+        }
+        carrier_.sample(xm, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
+        const auto& um = midpointGas_.velocity;
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            const double tau = dragResponseTime(drag_, radius[i], (um[i] - vm[i]).norm());
+            relaxExactly(x[i], v[i], um[i], tau, a, h);
+        }
+        break;
+    }
+    }
+}
+
+void Stepper::meetSurfaces(double h) {
+    // Backwards, so the particle swapped into a removed slot has already been handled.
+    for (std::size_t i = cloud_.size(); i-- > 0;) {
+        const Vec3& x = cloud_.position[i];
+        const Vec3& v = cloud_.velocity[i];
+        if (!x.allFinite() || !v.allFinite()) {
+            std::ostringstream message;
+            message << "particle " << cloud_.id[i] << " reached a non-finite state at t = "
+                    << time_ + h << " s (position " << x.transpose() << ", velocity "
+                    << v.transpose() << ")";
+            throw std::runtime_error(message.str());
+        }
+        int touched = -1;
+        double firstTouch = 2.0;
+        for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
+            const auto fraction =
+                planeContactFraction(scene_.surfaces[s], startPositions_[i], x, cloud_.radius[i]);
+            if (fraction && *fraction < firstTouch) {
+                firstTouch = *fraction;
+                touched = static_cast<int>(s);
+            }
+        }
+        if (touched >= 0) {
+            const Vec3& x0 = startPositions_[i];
+            const Vec3& v0 = startVelocities_[i];
+            arrivals_.push_back({cloud_.id[i], touched, time_ + firstTouch * h,
+                                 x0 + firstTouch * (x - x0), v0 + firstTouch * (v - v0),
+                                 cloud_.radius[i]});
+        } else if (insideBox(scene_.domain, x)) {
+            continue;
+        } else {
+            ++escaped_;
+        }
+        cloud_.removeAt(i);
+        startPositions_[i] = startPositions_.back();
+        startPositions_.pop_back();
+        startVelocities_[i] = startVelocities_.back();
+        startVelocities_.pop_back();
+    }
+}
+
+} // namespace slides

@@ -1,0 +1,70 @@
+// Stepper: the loop of one run — inject, sample the carrier, integrate, meet surfaces.
+//
+// Per step of length h (the last one shortened to end exactly at time.endTime):
+//   1. particles due before t + h enter at t (integrate/injector.h);
+//   2. the carrier is sampled once for the whole cloud;
+//   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
+//      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
+//      samples the carrier a second time at the half-step positions;
+//   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
+//      domain box has escaped; both leave the cloud.
+// The particle loop runs in parallel; each particle's update depends only on its own state,
+// so results are identical for any thread count. A non-finite position or velocity stops the
+// run with an error naming the particle, instead of propagating.
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/config/scene.h"
+#include "slides/core/particle_cloud.h"
+#include "slides/integrate/injector.h"
+#include "slides/physics/drag.h"
+#include "slides/surfaces/arrival.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace slides {
+
+class Stepper {
+public:
+    Stepper(const Scene& scene, const CarrierField& carrier);
+
+    /// Advances the cloud by one time step.
+    void step();
+    /// Whether the run is over: end time reached, or all particles done (stopWhenAllDone).
+    bool finished() const;
+
+    double time() const { return time_; }
+    long steps() const { return steps_; }
+    std::uint64_t particleSteps() const { return particleSteps_; }
+    long injected() const { return injector_.injected(); }
+    long escaped() const { return escaped_; }
+    const ParticleCloud& cloud() const { return cloud_; }
+    const std::vector<Arrival>& arrivals() const { return arrivals_; }
+
+private:
+    void advance(double h);
+    void meetSurfaces(double h);
+
+    const Scene& scene_;
+    const CarrierField& carrier_;
+    DragParameters drag_;
+    Vec3 bodyAcceleration_;
+    Injector injector_;
+    ParticleCloud cloud_;
+    std::vector<Arrival> arrivals_;
+    double time_ = 0;
+    long steps_ = 0;
+    long escaped_ = 0;
+    std::uint64_t particleSteps_ = 0;
+
+    // Scratch, reused every step.
+    CarrierSample gas_;
+    CarrierSample midpointGas_;
+    std::vector<Vec3> startPositions_;
+    std::vector<Vec3> startVelocities_;
+    std::vector<Vec3> midpointPositions_;
+    std::vector<Vec3> midpointVelocities_;
+};
+
+} // namespace slides

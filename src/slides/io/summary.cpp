@@ -1,0 +1,149 @@
+#include "slides/io/summary.h"
+
+#include <cmath>
+
+namespace slides {
+
+namespace {
+
+nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+template <typename Table, typename Value> std::string nameIn(const Table& table, Value value) {
+    for (const auto& entry : table)
+        if (entry.model == value) return std::string(entry.name);
+    return "?";
+}
+
+nlohmann::json material(const MaterialSettings& m) {
+    return {{"bulkModulus", m.bulkModulus},
+            {"shearModulus", m.shearModulus},
+            {"yieldStress", m.yieldStress},
+            {"surfaceEnergy", m.surfaceEnergy}};
+}
+
+/// Mean, rms and extremes of one quantity over the arrivals at one surface.
+nlohmann::json statistics(const std::vector<double>& values) {
+    if (values.empty()) return nullptr;
+    double sum = 0, squares = 0, low = values.front(), high = values.front();
+    for (double value : values) {
+        sum += value;
+        squares += value * value;
+        low = std::min(low, value);
+        high = std::max(high, value);
+    }
+    const double n = static_cast<double>(values.size());
+    return {{"mean", sum / n}, {"rms", std::sqrt(squares / n)}, {"min", low}, {"max", high}};
+}
+
+nlohmann::json arrivalsAt(const Scene& scene, const Stepper& stepper, int surface) {
+    const PlaneSurface& plane = scene.surfaces[static_cast<std::size_t>(surface)];
+    std::vector<double> impactSpeed, normalSpeed, distanceFromAxis, time;
+    for (const auto& arrival : stepper.arrivals()) {
+        if (arrival.surface != surface) continue;
+        impactSpeed.push_back(arrival.velocity.norm());
+        normalSpeed.push_back(-arrival.velocity.dot(plane.normal));
+        const Vec3 fromNozzle = arrival.position - scene.nozzle.centre;
+        distanceFromAxis.push_back(
+            (fromNozzle - fromNozzle.dot(scene.nozzle.axis) * scene.nozzle.axis).norm());
+        time.push_back(arrival.time);
+    }
+    return {{"count", impactSpeed.size()},
+            {"impactSpeed", statistics(impactSpeed)},
+            {"impactNormalSpeed", statistics(normalSpeed)},
+            {"distanceFromAxis", statistics(distanceFromAxis)},
+            {"arrivalTime", statistics(time)}};
+}
+
+} // namespace
+
+nlohmann::json sceneSettings(const Scene& scene) {
+    nlohmann::json settings;
+    settings["dictionary"] = scene.dictionaryFile.string();
+    settings["fluid"] = {{"density", scene.fluid.density},
+                         {"kinematicViscosity", scene.fluid.kinematicViscosity},
+                         {"temperature", scene.fluid.temperature}};
+    settings["nozzle"] = {{"centre", vec(scene.nozzle.centre)},
+                          {"axis", vec(scene.nozzle.axis)},
+                          {"radius", scene.nozzle.radius},
+                          {"crossSpanDirection", vec(scene.nozzle.crossSpanDirection)}};
+    const CarrierSettings& carrier = scene.carrier;
+    settings["carrier"] = {
+        {"type", carrier.type == CarrierType::analyticJet ? "analyticJet" : "roundLaminarJet"},
+        {"profile", carrier.profile == JetProfileKind::planar ? "planar" : "axisymmetric"},
+        {"nozzleVelocity", carrier.nozzleVelocity},
+        {"coreLength", carrier.coreLength},
+        {"viscosity", carrier.viscosity}};
+    const RadiusDistribution& radius = scene.particles.radius;
+    const char* radiusKinds[] = {"fixed", "normal", "logNormal"};
+    settings["particles"] = {
+        {"count", scene.particles.count},
+        {"density", scene.particles.density},
+        {"radiusDistribution",
+         {{"type", radiusKinds[static_cast<int>(radius.kind)]},
+          {"meanRadius", radius.meanRadius()},
+          {"minimum", radius.minimum},
+          {"maximum", std::isfinite(radius.maximum) ? nlohmann::json(radius.maximum) : nullptr}}},
+        {"material", material(scene.particles.material)}};
+    settings["injection"] = {
+        {"mode", scene.injection.mode == InjectionMode::rate ? "rate" : "allAtStart"},
+        {"rate", scene.injection.rate},
+        {"crossSpanSpeed", scene.injection.crossSpanSpeed},
+        {"seed", scene.injection.seed}};
+    settings["physics"] = {{"drag", nameIn(dragModelNames(), scene.physics.drag)},
+                           {"gravity", vec(scene.physics.gravity)},
+                           {"buoyancy", scene.physics.buoyancy}};
+    std::string integrator;
+    for (const auto& entry : integratorNames())
+        if (entry.integrator == scene.time.integrator) integrator = entry.name;
+    settings["time"] = {{"dt", scene.time.dt},
+                        {"endTime", scene.time.endTime},
+                        {"stopWhenAllDone", scene.time.stopWhenAllDone},
+                        {"integrator", integrator}};
+    for (const auto& plane : scene.surfaces)
+        settings["surfaces"][plane.name] = {{"type", "plane"},
+                                            {"point", vec(plane.point)},
+                                            {"normal", vec(plane.normal)},
+                                            {"material", material(plane.material)}};
+    settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
+    settings["output"] = {{"interval", scene.output.interval},
+                          {"carrierResolution", scene.output.carrierResolution}};
+    return settings;
+}
+
+nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics) {
+    nlohmann::json summary;
+    summary["slidesTrack"] = SLIDES_VERSION;
+    summary["case"] = scene.caseDirectory.string();
+    summary["carrier"] = metrics.carrier;
+
+    nlohmann::json arrived = nlohmann::json::object();
+    nlohmann::json arrivals = nlohmann::json::object();
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        arrivals[scene.surfaces[s].name] = arrivalsAt(scene, stepper, static_cast<int>(s));
+        arrived[scene.surfaces[s].name] = arrivals[scene.surfaces[s].name]["count"];
+    }
+    summary["particles"] = {{"requested", scene.particles.count},
+                            {"injected", stepper.injected()},
+                            {"arrived", arrived},
+                            {"escaped", stepper.escaped()},
+                            {"active", stepper.cloud().size()}};
+    summary["arrivals"] = arrivals;
+
+    const double meanRadius = scene.particles.radius.meanRadius();
+    summary["responseTime"] = {
+        {"stokes", stokesResponseTime(scene.particles.density, meanRadius, scene.fluid.density,
+                                      scene.fluid.kinematicViscosity)},
+        {"note", "tau_St = 2 rho_p R^2 / (9 rho_f nu) at the mean radius"}};
+    summary["time"] = {{"end", stepper.time()}, {"steps", stepper.steps()}};
+    const double particleSteps = static_cast<double>(stepper.particleSteps());
+    summary["performance"] = {
+        {"wallSeconds", metrics.wallSeconds},
+        {"threads", metrics.threads},
+        {"particleSteps", stepper.particleSteps()},
+        {"particleStepsPerSecond",
+         metrics.wallSeconds > 0 ? particleSteps / metrics.wallSeconds : 0.0}};
+    summary["settings"] = sceneSettings(scene);
+    return summary;
+}
+
+} // namespace slides

@@ -1,0 +1,26 @@
+// Run summary: CASE/slides/summary.json — counts, arrival statistics, speed and the settings.
+//
+//     { "particles": { "injected": 8000, "arrived": { "target": 7990 }, "escaped": 10, ... },
+//       "performance": { "particleStepsPerSecond": 2.1e7, ... }, "settings": { ... } }
+#pragma once
+
+#include "slides/config/scene.h"
+#include "slides/integrate/stepper.h"
+
+#include <nlohmann/json.hpp>
+
+namespace slides {
+
+struct RunMetrics {
+    double wallSeconds = 0;
+    int threads = 1;
+    std::string carrier; ///< CarrierField::describe()
+};
+
+/// The summary of a finished (or stopped) run.
+nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics);
+
+/// The scene as JSON, every value in SI units, as used by the run.
+nlohmann::json sceneSettings(const Scene& scene);
+
+} // namespace slides

@@ -1,0 +1,83 @@
+// Drag on a sphere: the correction f(Re) = Cd·Re/24 to Stokes drag, one entry per drag law.
+//
+// Reference: Eq. 3.16–3.17 of the reference (Haider & Levenspiel 1989, Powder Technol. 58:63,
+// sphericity 1); Schiller & Naumann (1933) for comparison; Stokes (1851). With f, the drag
+// acceleration is (u − v)·f/τ_St, τ_St = ρp d²/(18 μ) (Eq. 3.16 divided by the particle mass).
+//
+//     physics { drag haiderLevenspiel; }   // stokes | schillerNaumann | haiderLevenspiel
+//
+// How to add a drag law: add an enumerator, its name to dragModelNames(), and its case to
+// dragCorrection(); the family test (tests/unit/test_drag.cpp) then checks it automatically.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string_view>
+
+namespace slides {
+
+enum class DragModel { stokes, schillerNaumann, haiderLevenspiel };
+
+struct DragModelName {
+    DragModel model;
+    std::string_view name;
+};
+
+/// The name table of the drag family, as written in the dictionary.
+constexpr std::array<DragModelName, 3> dragModelNames() {
+    return {{{DragModel::stokes, "stokes"},
+             {DragModel::schillerNaumann, "schillerNaumann"},
+             {DragModel::haiderLevenspiel, "haiderLevenspiel"}}};
+}
+
+/// Particle Reynolds number on the diameter and the slip speed |u − v|.
+inline double particleReynolds(double slipSpeed, double particleRadius, double kinematicViscosity) {
+    return 2.0 * particleRadius * slipSpeed / kinematicViscosity;
+}
+
+/// Cd·Re/24 for the given law; 1 for Stokes drag, → 1 as Re → 0 for every law.
+inline double dragCorrection(DragModel model, double reynolds) {
+    switch (model) {
+    case DragModel::stokes:
+        return 1.0;
+    case DragModel::schillerNaumann:
+        // Cd = 24/Re (1 + 0.15 Re^0.687) for Re < 1000, Cd = 0.44 above.
+        return reynolds < 1000.0 ? 1.0 + 0.15 * std::pow(reynolds, 0.687) : 0.44 * reynolds / 24.0;
+    case DragModel::haiderLevenspiel:
+        // Eq. 3.17: Cd = 24/Re (1 + 0.1806 Re^0.6459) + 0.4251 / (1 + 6880.95/Re).
+        return 1.0 + 0.1806 * std::pow(reynolds, 0.6459) +
+               reynolds * 0.4251 / (24.0 * (1.0 + 6880.95 / reynolds));
+    }
+    return 1.0;
+}
+
+/// Drag coefficient Cd(Re) = 24 f(Re) / Re.
+inline double dragCoefficient(DragModel model, double reynolds) {
+    return 24.0 * dragCorrection(model, reynolds) / reynolds;
+}
+
+/// Stokes response time τ_St = 2 ρp R² / (9 ρf ν) [s].
+inline double stokesResponseTime(double particleDensity, double particleRadius, double fluidDensity,
+                                 double kinematicViscosity) {
+    return 2.0 * particleDensity * particleRadius * particleRadius /
+           (9.0 * fluidDensity * kinematicViscosity);
+}
+
+/// What the drag response time of a particle depends on besides its radius and slip.
+struct DragParameters {
+    DragModel model = DragModel::haiderLevenspiel;
+    double fluidDensity = 0;       ///< [kg/m³]
+    double kinematicViscosity = 0; ///< [m²/s]
+    double particleDensity = 0;    ///< [kg/m³]
+};
+
+/// Drag response time τ = τ_St / f(Re) [s]: dv/dt = (u − v)/τ is Eq. 3.16's drag per unit mass.
+inline double dragResponseTime(const DragParameters& drag, double particleRadius,
+                               double slipSpeed) {
+    const double reynolds = particleReynolds(slipSpeed, particleRadius, drag.kinematicViscosity);
+    return stokesResponseTime(drag.particleDensity, particleRadius, drag.fluidDensity,
+                              drag.kinematicViscosity) /
+           dragCorrection(drag.model, reynolds);
+}
+
+} // namespace slides

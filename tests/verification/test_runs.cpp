@@ -1,0 +1,255 @@
+// ctest-labels: foundation run
+// Whole runs: reproducibility (same seed → identical particles; thread count changes nothing),
+// conservation of particle count, injection statistics, and the command line's behaviour on
+// the default case and on broken cases (exit status 2, one message naming file, line, key).
+#include "slides/carrier/make_carrier.h"
+#include "slides/config/scene_keys.h"
+#include "slides/config/scene_reader.h"
+#include "slides/integrate/injector.h"
+#include "slides/integrate/stepper.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace slides {
+namespace {
+
+const std::filesystem::path sourceDir = SLIDES_SOURCE_DIR;
+const std::filesystem::path defaultCase = sourceDir / "foamCases" / "analyticSpray";
+
+std::string slurp(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// A scratch directory, removed at the end of the test.
+struct ScratchDirectory {
+    std::filesystem::path path;
+    explicit ScratchDirectory(const std::string& name)
+        : path(std::filesystem::temp_directory_path() /
+               ("slides-" + name + "-" + std::to_string(::getpid()))) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path / "constant");
+    }
+    ~ScratchDirectory() { std::filesystem::remove_all(path); }
+};
+
+struct Finished {
+    std::vector<ParticleId> ids;
+    std::vector<Vec3> positions, velocities;
+    long escaped;
+    std::size_t arrived;
+};
+
+/// The default case shortened to 600 particles, run to the end; state sorted by id.
+Finished runDefaultCase(int threads, std::uint64_t seed) {
+    Scene scene = readScene(defaultCase);
+    scene.particles.count = 600;
+    scene.injection.seed = seed;
+    scene.time.endTime = 2e-3; // particles still in flight, some arrived
+    const auto carrier = makeCarrier(scene);
+    omp_set_num_threads(threads);
+    Stepper stepper(scene, *carrier);
+    while (!stepper.finished()) stepper.step();
+    Finished result{{}, {}, {}, stepper.escaped(), stepper.arrivals().size()};
+    const ParticleCloud& cloud = stepper.cloud();
+    std::vector<std::size_t> order(cloud.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](auto a, auto b) { return cloud.id[a] < cloud.id[b]; });
+    for (auto i : order) {
+        result.ids.push_back(cloud.id[i]);
+        result.positions.push_back(cloud.position[i]);
+        result.velocities.push_back(cloud.velocity[i]);
+    }
+    EXPECT_EQ(stepper.injected(),
+              static_cast<long>(cloud.size() + stepper.arrivals().size()) + stepper.escaped())
+        << "particles must be conserved: injected = moving + arrived + escaped";
+    return result;
+}
+
+TEST(Reproducibility, SameSeedAndAnyThreadCountGiveBitIdenticalParticles) {
+    const Finished one = runDefaultCase(1, 7);
+    const Finished two = runDefaultCase(2, 7);
+    ASSERT_FALSE(one.ids.empty());
+    ASSERT_EQ(one.ids, two.ids);
+    EXPECT_EQ(one.escaped, two.escaped);
+    EXPECT_EQ(one.arrived, two.arrived);
+    for (std::size_t i = 0; i < one.ids.size(); ++i) {
+        ASSERT_EQ(one.positions[i], two.positions[i]) << "particle " << one.ids[i];
+        ASSERT_EQ(one.velocities[i], two.velocities[i]) << "particle " << one.ids[i];
+    }
+    const Finished other = runDefaultCase(2, 8);
+    EXPECT_NE(one.positions.front(), other.positions.front()) << "the seed must matter";
+}
+
+TEST(Injection, RadiiFollowTheNormalDistribution) {
+    // 20000 draws: the sample mean has standard error σ/√n = 0.007σ, so ±0.03σ is 4 errors.
+    RadiusDistribution distribution;
+    distribution.kind = RadiusDistributionKind::normal;
+    distribution.mean = 80e-6;
+    distribution.standardDeviation = 10e-6;
+    distribution.maximum = INFINITY;
+    double sum = 0, squares = 0;
+    const int n = 20000;
+    for (int id = 0; id < n; ++id) {
+        const double radius = drawRadius(distribution, 3, static_cast<ParticleId>(id));
+        sum += radius;
+        squares += radius * radius;
+    }
+    const double mean = sum / n;
+    const double deviation = std::sqrt(squares / n - mean * mean);
+    EXPECT_NEAR(mean, 80e-6, 0.03 * 10e-6);
+    EXPECT_NEAR(deviation, 10e-6, 0.03 * 10e-6); // standard error of σ̂: σ/√(2n) = 0.005σ
+}
+
+TEST(Injection, LogNormalMedianAndTruncation) {
+    RadiusDistribution distribution;
+    distribution.kind = RadiusDistributionKind::logNormal;
+    distribution.median = 50e-6;
+    distribution.geometricStandardDeviation = 1.5;
+    distribution.minimum = 30e-6;
+    distribution.maximum = 90e-6;
+    std::vector<double> radii;
+    for (int id = 0; id < 10001; ++id)
+        radii.push_back(drawRadius(distribution, 5, static_cast<ParticleId>(id)));
+    for (double radius : radii) ASSERT_TRUE(radius > 30e-6 && radius < 90e-6);
+    std::nth_element(radii.begin(), radii.begin() + 5000, radii.end());
+    // Truncation at ±1.26σ and ±1.45σ in ln R shifts the median by < 2 %; sampling error ~1 %.
+    EXPECT_NEAR(radii[5000] / 50e-6, 1.0, 0.04);
+}
+
+TEST(Injection, StartsOnTheNozzleDiscWithGasPlusCrossSpanVelocity) {
+    Scene scene = readScene(defaultCase);
+    scene.injection.mode = InjectionMode::allAtStart;
+    const auto carrier = makeCarrier(scene);
+    Injector injector(scene);
+    ParticleCloud cloud;
+    injector.injectUntil(0.0 + 1e-12, 0.0, *carrier, cloud);
+    ASSERT_EQ(static_cast<long>(cloud.size()), scene.particles.count);
+    CarrierSample gas;
+    carrier->sample(cloud.position, 0.0, {}, gas);
+    double radialSum = 0;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const Vec3 offset = cloud.position[i] - scene.nozzle.centre;
+        ASSERT_NEAR(offset.dot(scene.nozzle.axis), 0.0, 1e-15);
+        ASSERT_LE(offset.norm(), scene.nozzle.radius * (1 + 1e-12));
+        radialSum += offset.norm();
+        const Vec3 slip = cloud.velocity[i] - gas.velocity[i];
+        ASSERT_NEAR(slip.norm(), scene.injection.crossSpanSpeed, 1e-12);
+        ASSERT_NEAR(slip.dot(scene.nozzle.axis), 0.0, 1e-12);
+    }
+    // Uniform in area: mean distance from the centre is 2R/3 (standard error 0.24R/√8000).
+    EXPECT_NEAR(radialSum / cloud.size() / scene.nozzle.radius, 2.0 / 3.0, 0.012);
+}
+
+int runCli(const std::string& arguments, const std::filesystem::path& log) {
+    const std::string command =
+        std::string(SLIDES_TRACK_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
+    ScratchDirectory scratch("default-run");
+    const auto output = scratch.path / "out";
+    ASSERT_EQ(runCli(defaultCase.string() + " --quiet --output " + output.string(),
+                     scratch.path / "log"),
+              0)
+        << slurp(scratch.path / "log");
+    for (const char* file : {"particles.pvd", "carrier.vti", "summary.json", "particles_000000.vtp"})
+        EXPECT_TRUE(std::filesystem::exists(output / file)) << file;
+    const auto summary = nlohmann::json::parse(slurp(output / "summary.json"));
+    const long injected = summary["particles"]["injected"];
+    EXPECT_EQ(injected, 8000);
+    const long arrived = summary["particles"]["arrived"]["target"];
+    const long escaped = summary["particles"]["escaped"];
+    const long active = summary["particles"]["active"];
+    EXPECT_EQ(arrived + escaped + active, injected);
+    EXPECT_EQ(active, 0) << "stopWhenAllDone: the run ends when every particle is done";
+    EXPECT_GT(arrived, 7900) << "heavy particles fly nearly straight onto the target";
+    EXPECT_GT(summary["performance"]["particleStepsPerSecond"].get<double>(), 0);
+    for (const auto& entry : std::filesystem::directory_iterator(output))
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)
+            << "temporary left behind: " << entry.path();
+}
+
+/// Writes a copy of the default case's dictionary with one line replaced.
+void writeBrokenCase(const ScratchDirectory& scratch, const std::string& from,
+                     const std::string& to) {
+    std::string text = slurp(defaultCase / "constant" / "slidesProperties");
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+}
+
+struct BrokenCase {
+    const char* name;
+    const char* from;     ///< text of the default case to replace
+    const char* to;       ///< its replacement
+    int lineOffset;       ///< error line relative to the line where `from` starts
+    const char* expected; ///< substring of the one error message, after "file:line: "
+};
+
+class CommandLineRejects : public ::testing::TestWithParam<BrokenCase> {};
+
+TEST_P(CommandLineRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
+    const BrokenCase broken = GetParam();
+    ScratchDirectory scratch(broken.name);
+    writeBrokenCase(scratch, broken.from, broken.to);
+    const std::string original = slurp(defaultCase / "constant" / "slidesProperties");
+    const auto line = 1 + std::count(original.begin(), original.begin() + original.find(broken.from),
+                                     '\n') + broken.lineOffset;
+    const auto log = scratch.path / "log";
+    EXPECT_EQ(runCli(scratch.path.string() + " --quiet", log), 2);
+    const std::string message = slurp(log);
+    const std::string where = "slidesProperties:" + std::to_string(line) + ": ";
+    EXPECT_NE(message.find(where + broken.expected), std::string::npos)
+        << "expected '" << where << broken.expected << "' in:\n" << message;
+    EXPECT_EQ(message.find("error:"), message.rfind("error:")) << "one message: " << message;
+    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"))
+        << "bad input must not create output";
+}
+
+const BrokenCase brokenCases[] = {
+    {"unknownKey", "    density     5680;", "    density     5680;\n    densty 1;", 1,
+     "key 'particles.densty': unknown key; valid keys here are:"},
+    {"wrongType", "    count       8000;", "    count       many;", 0,
+     "key 'particles.count': expected"},
+    {"negativeRadius", "        value   80e-6;", "        value   -80e-6;", 0,
+     "key 'particles.radiusDistribution.value': must be a positive number"},
+    {"unknownModel", "    drag        haiderLevenspiel;", "    drag        fast;", 0,
+     "key 'physics.drag': unknown drag 'fast'; valid drag names are:"},
+    {"missingSemicolon", "    seed            1;", "    seed            1", 1, ""},
+    {"nozzleOutsideDomain", "    centre      (0 0 0);", "    centre      (1 0 0);", 0,
+     "key 'nozzle.centre': lies outside the domain box"},
+};
+
+INSTANTIATE_TEST_SUITE_P(BrokenCases, CommandLineRejects, ::testing::ValuesIn(brokenCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CommandLine, MissingDictionaryIsAnInputError) {
+    ScratchDirectory scratch("missing");
+    const auto log = scratch.path / "log";
+    EXPECT_EQ(runCli(scratch.path.string() + " --quiet", log), 2);
+    EXPECT_NE(slurp(log).find("constant/slidesProperties"), std::string::npos) << slurp(log);
+}
+
+TEST(KeyTable, ReadmeListsEveryKeyAsDeclared) {
+    // The README table is the output of `slides-track --list-keys`; regenerate it with
+    // tools/update-readme-keys when keys change.
+    EXPECT_NE(slurp(sourceDir / "README.md").find(sceneKeysMarkdown()), std::string::npos)
+        << "README.md's key table is out of date: run tools/update-readme-keys";
+}
+
+} // namespace
+} // namespace slides

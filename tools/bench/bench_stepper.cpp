@@ -1,0 +1,37 @@
+// Particle-steps per second of the stepper: drag (Haider–Levenspiel) + gravity on the
+// analytic sech² jet of the default case, for each integrator and 1e3–1e5 particles.
+//
+//     build/tools/bench/bench_stepper --benchmark_counters_tabular=true
+// items_per_second is particle-steps per second.
+#include "slides/carrier/make_carrier.h"
+#include "slides/config/scene_reader.h"
+#include "slides/integrate/stepper.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+void stepperThroughput(benchmark::State& state) {
+    slides::Scene scene =
+        slides::readScene(std::filesystem::path(SLIDES_SOURCE_DIR) / "foamCases/analyticSpray");
+    scene.particles.count = state.range(0);
+    scene.injection.mode = slides::InjectionMode::allAtStart;
+    scene.time.integrator = slides::integratorNames()[static_cast<std::size_t>(state.range(1))].integrator;
+    scene.time.endTime = 1e9;
+    scene.time.stopWhenAllDone = false;
+    scene.surfaces.clear(); // keep every particle in flight while timing
+    scene.domain = {slides::Vec3::Constant(-1e9), slides::Vec3::Constant(1e9)};
+    const auto carrier = slides::makeCarrier(scene);
+    slides::Stepper stepper(scene, *carrier);
+    stepper.step(); // injects everyone
+    for (auto _ : state) stepper.step();
+    state.SetItemsProcessed(state.iterations() * scene.particles.count);
+    state.SetLabel(std::string(slides::integratorNames()[static_cast<std::size_t>(state.range(1))].name));
+}
+
+BENCHMARK(stepperThroughput)
+    ->ArgsProduct({{1000, 10000, 100000}, {0, 1, 2}})
+    ->ArgNames({"particles", "integrator"})
+    ->Unit(benchmark::kMicrosecond);
+
+} // namespace
