@@ -1,0 +1,27 @@
+// Atomic file writes: write under a temporary name in the same directory, flush to disk,
+// rename over the target. A crash or a full disk never leaves a truncated file that looks
+// complete; the previous version, if any, stays intact until the new one is whole.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace slides {
+
+/// A file could not be written; the message names the file and the reason.
+class OutputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Calls writeTo(temporary) to fill a temporary file, then renames it to target. If writeTo
+/// throws or the rename fails, the temporary is removed and target is untouched.
+void writeFileAtomically(const std::filesystem::path& target,
+                         const std::function<void(const std::filesystem::path&)>& writeTo);
+
+void writeTextAtomically(const std::filesystem::path& target, std::string_view text);
+
+} // namespace slides

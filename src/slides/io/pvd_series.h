@@ -1,0 +1,34 @@
+// PvdSeries: a ParaView collection file (.pvd) listing the frames of a time series.
+//
+//     <VTKFile type="Collection" version="0.1"><Collection>
+//       <DataSet timestep="0.0005" part="0" file="particles_000001.vtp"/> ...
+// Rewritten atomically after every frame, so a stopped run leaves a valid series of the
+// frames written so far. ParaView opens it as one time-dependent dataset.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace slides {
+
+class PvdSeries {
+public:
+    /// file: the .pvd to (re)write; frame files are given relative to its directory.
+    explicit PvdSeries(std::filesystem::path file);
+
+    /// Appends a frame at time [s] and rewrites the collection.
+    void add(double time, const std::string& relativeFile);
+
+    const std::filesystem::path& file() const { return file_; }
+
+private:
+    struct Entry {
+        double time;
+        std::string file;
+    };
+    std::filesystem::path file_;
+    std::vector<Entry> entries_;
+};
+
+} // namespace slides

@@ -1,0 +1,61 @@
+#include "slides/io/vtk_particles.h"
+
+#include "slides/io/atomic_file.h"
+#include "slides/io/vtk_writing.h"
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkXMLPolyDataWriter.h>
+
+namespace slides {
+
+void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame) {
+    const auto count = static_cast<vtkIdType>(frame.position.size());
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(count);
+    vtkNew<vtkCellArray> vertices;
+    vertices->AllocateExact(count, count);
+    vtkNew<vtkTypeInt64Array> id;
+    id->SetName("id");
+    id->SetNumberOfValues(count);
+    auto diameter = namedDoubleArray("diameter", 1, count);
+    auto velocity = namedDoubleArray("velocity", 3, count);
+    auto speed = namedDoubleArray("speed", 1, count);
+    vtkNew<vtkIntArray> state;
+    state->SetName("state");
+    state->SetNumberOfValues(count);
+    for (vtkIdType i = 0; i < count; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        points->SetPoint(i, frame.position[k].data());
+        vertices->InsertNextCell(1, &i);
+        id->SetValue(i, static_cast<vtkTypeInt64>(frame.id[k]));
+        diameter->SetValue(i, 2 * frame.radius[k]);
+        velocity->SetTypedTuple(i, frame.velocity[k].data());
+        speed->SetValue(i, frame.velocity[k].norm());
+        state->SetValue(i, frame.state[k]);
+    }
+    vtkNew<vtkPolyData> polyData;
+    polyData->SetPoints(points);
+    polyData->SetVerts(vertices);
+    auto* data = polyData->GetPointData();
+    data->AddArray(id);
+    data->AddArray(diameter);
+    data->AddArray(velocity);
+    data->AddArray(speed);
+    data->AddArray(state);
+    data->SetActiveScalars("speed");
+    data->SetActiveVectors("velocity");
+
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(polyData);
+    writeVtkAtomically(file, writer);
+}
+
+} // namespace slides
