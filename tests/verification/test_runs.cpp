@@ -229,7 +229,8 @@ const BrokenCase brokenCases[] = {
      "key 'particles.radiusDistribution.value': must be a positive number"},
     {"unknownModel", "    drag        haiderLevenspiel;", "    drag        fast;", 0,
      "key 'physics.drag': unknown drag 'fast'; valid drag names are:"},
-    {"missingSemicolon", "    seed            1;", "    seed            1", 1, ""},
+    {"missingSemicolon", "    seed            1;", "    seed            1", 0,
+     "key 'injection.seed': missing ';' at the end of the entry"},
     {"nozzleOutsideDomain", "    centre      (0 0 0);", "    centre      (1 0 0);", 0,
      "key 'nozzle.centre': lies outside the domain box"},
 };

@@ -6,11 +6,17 @@
 namespace slides {
 
 std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
-    switch (scene.carrier.type) {
+    const CarrierSettings& carrier = scene.carrier;
+    switch (carrier.type) {
     case CarrierType::analyticJet:
-        return std::make_unique<AnalyticJet>(scene.nozzle, scene.carrier);
+        return std::make_unique<AnalyticJet>(
+            scene.nozzle, AnalyticJetParameters{carrier.profile, carrier.nozzleVelocity,
+                                                carrier.viscosity, carrier.coreLength, carrier.C1,
+                                                carrier.C2, carrier.C3});
     case CarrierType::roundLaminarJet:
-        return std::make_unique<RoundLaminarJet>(scene.nozzle, scene.carrier);
+        return std::make_unique<RoundLaminarJet>(
+            scene.nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
+                                                    carrier.coreLength});
     }
     throw std::logic_error("carrier type without a constructor");
 }

@@ -3,49 +3,82 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 namespace slides {
 
+// With q = 1 + ξ²/4, f = q^(−2), f' = −ξ q^(−3), h = (ξ − ξ³/4) f, h' = (1 − 3ξ²/4) f + (ξ − ξ³/4)
+// f', ∂ξ/∂s = −ξ/s and ∂ξ/∂r = similarity/s (A = amplitude, B = radialAmplitude, c = similarity):
+//   ∂u/∂s = −A (f + ξ f')/s²,   ∂u/∂r = A c f'/s²,
+//   ∂v/∂s = −B (h + ξ h')/s²,   ∂v/∂r = B c h'/s²,
+//   v/r   = B c (1 − ξ²/4) f/s²   (exact, no division by r).
 ProfileSample RoundLaminarProfile::at(double s, double r) const {
     const double xi = similarity * r / s;
-    const double q = 1.0 + 0.25 * xi * xi;
-    const double f = 1.0 / (q * q);               // (1 + ξ²/4)^(−2)
-    const double dfdXi = -xi / (q * q * q);
-    const double h = (xi - 0.25 * xi * xi * xi) * f; // radial shape
-    const double dhdXi = (1.0 - 0.75 * xi * xi) * f + (xi - 0.25 * xi * xi * xi) * dfdXi;
+    const double xi2 = xi * xi;
+    const double q = 1.0 + 0.25 * xi2;
+    const double f = 1.0 / (q * q);
+    const double dfdXi = -xi * f / q;
+    const double shape = 1.0 - 0.25 * xi2; // h = ξ·shape·f
+    const double h = xi * shape * f;
+    const double dhdXi = (1.0 - 0.75 * xi2) * f + xi * shape * dfdXi;
+    const double s2 = s * s;
     ProfileSample p;
     p.u = amplitude * f / s;
-    p.dudS = -amplitude * (f + xi * dfdXi) / (s * s);
-    p.dudY = amplitude * similarity * dfdXi / (s * s);
+    p.dudS = -amplitude * (f + xi * dfdXi) / s2;
+    p.dudY = amplitude * similarity * dfdXi / s2;
     p.v = radialAmplitude * h / s;
-    p.dvdS = -radialAmplitude * (h + xi * dhdXi) / (s * s);
-    p.dvdY = radialAmplitude * similarity * dhdXi / (s * s);
+    p.dvdS = -radialAmplitude * (h + xi * dhdXi) / s2;
+    p.dvdY = radialAmplitude * similarity * dhdXi / s2;
+    p.vOverY = radialAmplitude * similarity * shape * f / s2;
     return p;
 }
 
-RoundLaminarJet::RoundLaminarJet(const NozzleSettings& nozzle, const CarrierSettings& settings) {
-    const double nu = settings.viscosity;
-    const double U0 = settings.nozzleVelocity;
-    momentumFlux_ = std::numbers::pi * nozzle.radius * nozzle.radius * U0 * U0;
-    const double K = momentumFlux_;
-    profile_.amplitude = 3.0 * K / (8.0 * std::numbers::pi * nu);
-    profile_.radialAmplitude = std::sqrt(3.0 * K / std::numbers::pi) / 4.0;
-    profile_.similarity = profile_.radialAmplitude / nu;
-    frame_.nozzle = nozzle;
-    frame_.geometry = JetProfileKind::axisymmetric;
-    frame_.coreLength = settings.coreLength;
-    frame_.virtualOrigin = profile_.amplitude / U0;
+namespace {
+
+void require(bool condition, const std::string& message) {
+    if (!condition)
+        throw std::invalid_argument("roundLaminarJet: " + message);
 }
 
-void RoundLaminarJet::sample(std::span<const Vec3> points, double, CarrierNeeds needs,
-                             CarrierSample& out) const {
+RoundLaminarProfile roundProfile(double K, const RoundLaminarJetParameters& jet) {
+    const double nu = jet.viscosity;
+    require(std::isfinite(jet.nozzleVelocity) && jet.nozzleVelocity > 0,
+            "nozzleVelocity must be positive");
+    require(std::isfinite(nu) && nu > 0, "viscosity must be positive");
+    RoundLaminarProfile profile;
+    profile.amplitude = 3.0 * K / (8.0 * std::numbers::pi * nu);
+    profile.radialAmplitude = std::sqrt(3.0 * K / std::numbers::pi) / 4.0;
+    profile.similarity = profile.radialAmplitude / nu;
+    return profile;
+}
+
+} // namespace
+
+RoundLaminarJet::RoundLaminarJet(const JetNozzle& nozzle,
+                                 const RoundLaminarJetParameters& parameters)
+    : momentumFlux_(std::numbers::pi * nozzle.radius * nozzle.radius * parameters.nozzleVelocity *
+                    parameters.nozzleVelocity),
+      profile_(roundProfile(momentumFlux_, parameters)),
+      frame_(nozzle, JetGeometry::axisymmetric, parameters.coreLength,
+             profile_.amplitude / parameters.nozzleVelocity) {}
+
+void RoundLaminarJet::sample(std::span<const Vec3> points, double /*time: steady*/,
+                             CarrierNeeds needs, CarrierSample& out) const {
     frame_.sample(profile_, points, needs, out);
+}
+
+double RoundLaminarJet::centrelineVelocity(double axialDistance) const {
+    if (axialDistance < 0)
+        return 0;
+    return profile_.amplitude / frame_.similarityCoordinate(axialDistance);
 }
 
 std::string RoundLaminarJet::describe() const {
     std::ostringstream text;
-    text << "roundLaminarJet (Schlichting): K = " << momentumFlux_ << " m^4/s^2, virtual origin "
-         << frame_.virtualOrigin << " m, core " << frame_.coreLength << " m";
+    text.precision(4);
+    text << "roundLaminarJet (Schlichting's round laminar jet): K = " << momentumFlux_
+         << " m^4/s^2, virtual origin " << frame_.virtualOrigin() << " m, core "
+         << frame_.coreLength() << " m";
     return text.str();
 }
 

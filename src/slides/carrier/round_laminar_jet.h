@@ -1,43 +1,63 @@
-// RoundLaminarJet: Schlichting's exact similarity solution of the round laminar jet
-// (Schlichting 1933; Boundary-Layer Theory, "circular jet").
+// RoundLaminarJet: Schlichting's exact similarity solution of the round (axisymmetric) laminar jet
+// (Schlichting 1933, ZAMM 13; Boundary-Layer Theory, "circular jet"), a mass-conserving
+// alternative to the axisymmetric use of Eq. 5.10/5.11.
 //
-//   u = 3K/(8πν s) (1 + ξ²/4)^(−2),   v = √(3K/π)/(4 s) (ξ − ξ³/4)(1 + ξ²/4)^(−2),
-//   ξ = √(3K/π)/(4ν) · r/s,   K = J/ρ = π R² U0²
+//     carrier { type roundLaminarJet;
+//               roundLaminarJetCoeffs { nozzleVelocity 25; coreLength 0; effectiveViscosity 2e-4; }
+//               }
 //
-// It conserves mass (∂u/∂s + (1/r)∂(r v)/∂r = 0) and momentum flux (∫u² 2πr dr = K) exactly.
-// The virtual origin, where the centreline speed 3K/(8πν s) equals U0, is s0 = 3K/(8πν U0).
+//   u = 3K/(8πν s) · (1 + ξ²/4)^(−2),
+//   v = √(3K/π)/(4 s) · (ξ − ξ³/4)(1 + ξ²/4)^(−2),      ξ = √(3K/π)/(4ν) · r/s,
 //
-//     carrier { type roundLaminarJet; roundLaminarJetCoeffs { nozzleVelocity 25; } }
+// with K = J/ρ = ∫u² 2πr dr the kinematic momentum flux, π R² U0² for a round nozzle of radius R,
+// and ν the fluid's (or an effective) viscosity. It satisfies 3-D continuity
+// ∂u/∂s + (1/r)∂(r v)/∂r = 0 exactly, conserves K at every s, and carries the volume flux
+// ∫u 2πr dr = 8πν s, independent of K. U = u e_a + v e_r (v < 0 for ξ > 2: entrainment).
+// The virtual origin, where the centreline speed 3K/(8πν s) equals U0, is s0 = 3K/(8πν U0)
+// = (3/8) R² U0/ν; core and coordinates as in carrier/jet_frame.h (geometry axisymmetric).
 #pragma once
 
 #include "slides/carrier/jet_frame.h"
 
+#include <string>
+
 namespace slides {
 
+struct RoundLaminarJetParameters {
+    double nozzleVelocity = 0; ///< U0 [m/s]
+    double viscosity = 0;      ///< ν [m²/s] that sets the spreading
+    double coreLength = 0;     ///< unentrained core [m]
+};
+
+/// Schlichting's round jet and its closed-form derivatives.
 struct RoundLaminarProfile {
-    double amplitude = 0;  ///< 3K/(8πν) [m²/s]
-    double similarity = 0; ///< √(3K/π)/(4ν) [1/1]: ξ = similarity·r/s
-    double radialAmplitude = 0; ///< √(3K/π)/4 [m²/s]
+    double amplitude = 0; ///< 3K/(8πν) [m²/s]: u = amplitude·(1 + ξ²/4)^(−2)/s
+    double radialAmplitude = 0; ///< √(3K/π)/4 [m²/s]: v = radialAmplitude·(ξ − ξ³/4)(…)^(−2)/s
+    double similarity = 0; ///< √(3K/π)/(4ν) [1]: ξ = similarity·r/s
     ProfileSample at(double s, double r) const;
 };
 
-class RoundLaminarJet : public CarrierField {
-public:
-    RoundLaminarJet(const NozzleSettings& nozzle, const CarrierSettings& settings);
+class RoundLaminarJet final : public CarrierField {
+  public:
+    /// Throws std::invalid_argument for U0 ≤ 0, ν ≤ 0 or an invalid nozzle (see JetFrame).
+    RoundLaminarJet(const JetNozzle& nozzle, const RoundLaminarJetParameters& parameters);
 
     void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                 CarrierSample& out) const override;
     std::string describe() const override;
 
     const RoundLaminarProfile& profile() const { return profile_; }
-    double virtualOrigin() const { return frame_.virtualOrigin; }
-    /// Kinematic momentum flux K = π R² U0² [m⁴/s²].
-    double momentumFlux() const { return momentumFlux_; }
+    const JetFrame& frame() const { return frame_; }
+    double virtualOrigin() const { return frame_.virtualOrigin(); } ///< 3K/(8πν U0) [m]
+    double momentumFlux() const { return momentumFlux_; }           ///< K = π R² U0² [m⁴/s²]
+    /// Centreline speed at axial distance a: 0 behind the exit plane, U0 in the core,
+    /// 3K/(8πν s) beyond [m/s].
+    double centrelineVelocity(double axialDistance) const;
 
-private:
+  private:
+    double momentumFlux_;
     RoundLaminarProfile profile_;
     JetFrame frame_;
-    double momentumFlux_ = 0;
 };
 
 } // namespace slides

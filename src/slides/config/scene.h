@@ -5,6 +5,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
 #include "slides/physics/drag.h"
@@ -24,19 +25,11 @@ struct FluidSettings {
     double temperature = 0;        ///< [K]
 };
 
-struct NozzleSettings {
-    Vec3 centre = Vec3::Zero();
-    Vec3 axis = Vec3::UnitX();               ///< unit, jet direction
-    double radius = 0;                       ///< [m]
-    Vec3 crossSpanDirection = Vec3::UnitY(); ///< unit, ⟂ axis: the y of a planar jet
-};
-
 enum class CarrierType { analyticJet, roundLaminarJet };
-enum class JetProfileKind { planar, axisymmetric };
 
 struct CarrierSettings {
     CarrierType type = CarrierType::analyticJet;
-    JetProfileKind profile = JetProfileKind::axisymmetric; ///< analyticJet only
+    JetGeometry profile = JetGeometry::axisymmetric;      ///< analyticJet only
     double nozzleVelocity = 0;                             ///< U0 [m/s]
     double coreLength = 0;                                 ///< unentrained core [m]
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
@@ -112,7 +105,7 @@ struct Scene {
     std::filesystem::path caseDirectory;
     std::filesystem::path dictionaryFile;
     FluidSettings fluid;
-    NozzleSettings nozzle;
+    JetNozzle nozzle;
     CarrierSettings carrier;
     ParticleSettings particles;
     InjectionSettings injection;

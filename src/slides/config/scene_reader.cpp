@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace slides {
 
@@ -116,6 +117,7 @@ public:
         for (const auto& key : dictionary.keys()) {
             const std::string path = dictionary.keyPath(key);
             const KeyDeclaration* declared = findSceneKey(path);
+            if (!declared && top_.isReferenced(path)) continue; // a variable of the file
             if (!declared) dictionary.fail(key, "unknown key; valid keys here are:" +
                                                     validKeysIn(dictionary.path()));
             const bool wantsDictionary = declared->kind == KeyKind::dictionary;
@@ -128,7 +130,9 @@ public:
     }
 
 private:
-    template <typename Reader> auto read(const std::string& path, Reader reader) const {
+    template <typename Reader>
+    std::invoke_result_t<Reader, const Dictionary&, const std::string&>
+    read(const std::string& path, Reader reader) const {
         const KeyDeclaration& key = declaration(path);
         std::string leaf;
         if (const Dictionary* parent = parentOf(path, leaf); parent && parent->has(leaf))
@@ -248,8 +252,8 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     carrier.viscosity =
         keys.optionalScalar(coeffs + ".effectiveViscosity").value_or(fluid.kinematicViscosity);
     if (carrier.type == CarrierType::analyticJet) {
-        carrier.profile = keys.word(coeffs + ".profile") == "planar" ? JetProfileKind::planar
-                                                                     : JetProfileKind::axisymmetric;
+        carrier.profile = keys.word(coeffs + ".profile") == "planar" ? JetGeometry::planar
+                                                                     : JetGeometry::axisymmetric;
         carrier.C1 = keys.optionalScalar(coeffs + ".C1");
         carrier.C2 = keys.optionalScalar(coeffs + ".C2");
         carrier.C3 = keys.optionalScalar(coeffs + ".C3");

@@ -6,9 +6,9 @@ namespace {
 std::string locate(const std::string& file, int line, const std::string& key,
                    const std::string& message) {
     std::string where = file.empty() ? std::string("input") : file;
-    if (line > 0) where += ":" + std::to_string(line);
-    if (!key.empty()) where += ": key '" + key + "'";
-    return where + ": " + message;
+    if (line > 0) where.append(":").append(std::to_string(line));
+    if (!key.empty()) where.append(": key '").append(key).append("'");
+    return where.append(": ").append(message);
 }
 } // namespace
 

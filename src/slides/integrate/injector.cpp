@@ -39,7 +39,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         ++last;
     if (last == first) return;
 
-    const NozzleSettings& nozzle = scene_.nozzle;
+    const JetNozzle& nozzle = scene_.nozzle;
     const Vec3 across = nozzle.crossSpanDirection;
     const Vec3 other = nozzle.axis.cross(across);
     const auto count = static_cast<std::size_t>(last - first);

@@ -3,6 +3,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <system_error>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -10,35 +13,39 @@ namespace slides {
 
 namespace {
 
-std::filesystem::path temporaryFor(const std::filesystem::path& target) {
-    return target.parent_path() /
-           (target.filename().string() + ".tmp-" + std::to_string(::getpid()));
+[[noreturn]] void fail(const std::filesystem::path& target, const std::string& reason) {
+    throw OutputError("cannot write " + target.string() + ": " + reason);
 }
 
-/// Flushes a written file to disk so the rename never publishes unwritten blocks.
-void syncToDisk(const std::filesystem::path& file) {
-    const int descriptor = ::open(file.c_str(), O_RDONLY);
-    if (descriptor < 0 || ::fsync(descriptor) != 0) {
-        const std::string reason = std::strerror(errno);
-        if (descriptor >= 0) ::close(descriptor);
-        throw OutputError("cannot write " + file.string() + ": " + reason);
-    }
-    ::close(descriptor);
+/// Opens file with flags, then closes it; fsync first when asked. Throws with errno's reason.
+void openAndClose(const std::filesystem::path& target, const std::filesystem::path& file, int flags,
+                  bool sync) {
+    const int descriptor = ::open(file.c_str(), flags | O_CLOEXEC, 0666);
+    if (descriptor < 0)
+        fail(target, std::strerror(errno));
+    const bool synced = !sync || ::fsync(descriptor) == 0;
+    const int syncErrno = errno;
+    if (::close(descriptor) != 0 || !synced)
+        fail(target, std::strerror(synced ? errno : syncErrno));
 }
 
 } // namespace
 
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& writeTo) {
-    const auto temporary = temporaryFor(target);
+    const auto temporary =
+        target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(::getpid()));
+    // Creating the temporary here reports a missing or read-only directory with the OS reason,
+    // before a writer such as VTK's can fail with a vaguer one.
+    openAndClose(target, temporary, O_WRONLY | O_CREAT | O_TRUNC, false);
     try {
         writeTo(temporary);
-        if (!std::filesystem::exists(temporary))
-            throw OutputError("cannot write " + target.string() + ": nothing was written");
-        syncToDisk(temporary);
+        // Flushed before the rename, so the target never names unwritten blocks.
+        openAndClose(target, temporary, O_RDONLY, true);
         std::error_code error;
         std::filesystem::rename(temporary, target, error);
-        if (error) throw OutputError("cannot write " + target.string() + ": " + error.message());
+        if (error)
+            fail(target, error.message());
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
@@ -50,12 +57,11 @@ void writeTextAtomically(const std::filesystem::path& target, std::string_view t
     writeFileAtomically(target, [&](const std::filesystem::path& temporary) {
         std::FILE* file = std::fopen(temporary.c_str(), "wb");
         if (!file)
-            throw OutputError("cannot write " + target.string() + ": " + std::strerror(errno));
+            fail(target, std::strerror(errno));
         const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-        const int savedErrno = errno;
+        const int writeErrno = errno;
         if (std::fclose(file) != 0 || !written)
-            throw OutputError("cannot write " + target.string() + ": " +
-                              std::strerror(written ? errno : savedErrno));
+            fail(target, std::strerror(written ? errno : writeErrno));
     });
 }
 

@@ -6,19 +6,20 @@
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
-#include <string>
 #include <string_view>
 
 namespace slides {
 
 /// A file could not be written; the message names the file and the reason.
 class OutputError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
-/// Calls writeTo(temporary) to fill a temporary file, then renames it to target. If writeTo
-/// throws or the rename fails, the temporary is removed and target is untouched.
+/// Creates the temporary `<target>.tmp-<pid>` (empty), calls writeTo(temporary) to fill it,
+/// flushes it to disk and renames it to target. If anything fails or writeTo throws, the
+/// temporary is removed, target is untouched and the exception propagates (OutputError for
+/// failures here).
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& writeTo);
 

@@ -3,24 +3,53 @@
 #include "slides/io/atomic_file.h"
 
 #include <cstdio>
+#include <string_view>
 
 namespace slides {
+
+namespace {
+
+/// text with the characters XML reserves in an attribute value replaced by entities.
+std::string xmlAttribute(const std::string& text) {
+    std::string escaped;
+    for (const char c : text) {
+        switch (c) {
+        case '&':
+            escaped += "&amp;";
+            break;
+        case '<':
+            escaped += "&lt;";
+            break;
+        case '>':
+            escaped += "&gt;";
+            break;
+        case '"':
+            escaped += "&quot;";
+            break;
+        default:
+            escaped += c;
+        }
+    }
+    return escaped;
+}
+
+constexpr std::string_view head = "<?xml version=\"1.0\"?>\n"
+                                  "<VTKFile type=\"Collection\" version=\"0.1\" "
+                                  "byte_order=\"LittleEndian\">\n"
+                                  "  <Collection>\n";
+constexpr std::string_view tail = "  </Collection>\n</VTKFile>\n";
+
+} // namespace
 
 PvdSeries::PvdSeries(std::filesystem::path file) : file_(std::move(file)) {}
 
 void PvdSeries::add(double time, const std::string& relativeFile) {
-    entries_.push_back({time, relativeFile});
-    std::string text = "<?xml version=\"1.0\"?>\n"
-                       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                       "  <Collection>\n";
     char timestep[32];
-    for (const auto& entry : entries_) {
-        std::snprintf(timestep, sizeof timestep, "%.17g", entry.time);
-        text += "    <DataSet timestep=\"" + std::string(timestep) + "\" part=\"0\" file=\"" +
-                entry.file + "\"/>\n";
-    }
-    text += "  </Collection>\n</VTKFile>\n";
-    writeTextAtomically(file_, text);
+    std::snprintf(timestep, sizeof timestep, "%.17g", time);
+    std::string dataSets = dataSets_ + "    <DataSet timestep=\"" + timestep +
+                           "\" part=\"0\" file=\"" + xmlAttribute(relativeFile) + "\"/>\n";
+    writeTextAtomically(file_, std::string(head) + dataSets + std::string(tail));
+    dataSets_ = std::move(dataSets);
 }
 
 } // namespace slides

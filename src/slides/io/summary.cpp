@@ -69,7 +69,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
     const CarrierSettings& carrier = scene.carrier;
     settings["carrier"] = {
         {"type", carrier.type == CarrierType::analyticJet ? "analyticJet" : "roundLaminarJet"},
-        {"profile", carrier.profile == JetProfileKind::planar ? "planar" : "axisymmetric"},
+        {"profile", jetGeometryName(carrier.profile)},
         {"nozzleVelocity", carrier.nozzleVelocity},
         {"coreLength", carrier.coreLength},
         {"viscosity", carrier.viscosity}};

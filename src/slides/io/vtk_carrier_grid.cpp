@@ -2,22 +2,27 @@
 
 #include "slides/io/vtk_writing.h"
 
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkXMLImageDataWriter.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace slides {
 
-void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carrier,
-                     const Box& box, std::array<int, 3> pointsPerAxis, double time) {
+void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carrier, const Box& box,
+                     std::array<int, 3> pointsPerAxis, double time) {
     Vec3 spacing;
-    for (int axis = 0; axis < 3; ++axis)
+    for (int axis = 0; axis < 3; ++axis) {
+        if (pointsPerAxis[axis] < 1)
+            throw std::invalid_argument("writeCarrierVti: an axis has no lattice points");
         spacing[axis] = pointsPerAxis[axis] > 1
                             ? (box.max[axis] - box.min[axis]) / (pointsPerAxis[axis] - 1)
                             : 1.0;
+    }
     // VTK orders lattice points with x fastest, then y, then z.
     std::vector<Vec3> points;
     points.reserve(static_cast<std::size_t>(pointsPerAxis[0]) * pointsPerAxis[1] *
@@ -37,6 +42,8 @@ void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carr
         velocity->SetTypedTuple(n, u.data());
         speed->SetValue(n, u.norm());
     }
+    auto timeValue = namedDoubleArray("TimeValue", 1, 1);
+    timeValue->SetValue(0, time);
     vtkNew<vtkImageData> image;
     image->SetDimensions(pointsPerAxis.data());
     image->SetOrigin(box.min.data());
@@ -45,6 +52,7 @@ void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carr
     image->GetPointData()->AddArray(speed);
     image->GetPointData()->SetActiveVectors("U");
     image->GetPointData()->SetActiveScalars("magU");
+    image->GetFieldData()->AddArray(timeValue);
 
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetInputData(image);

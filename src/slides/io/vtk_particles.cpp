@@ -1,22 +1,27 @@
 #include "slides/io/vtk_particles.h"
 
-#include "slides/io/atomic_file.h"
 #include "slides/io/vtk_writing.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
-#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include <stdexcept>
 
 namespace slides {
 
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame) {
-    const auto count = static_cast<vtkIdType>(frame.position.size());
+    const std::size_t size = frame.id.size();
+    if (frame.position.size() != size || frame.velocity.size() != size ||
+        frame.radius.size() != size || frame.state.size() != size)
+        throw std::invalid_argument("writeParticlesVtp: the frame's arrays differ in length");
+    const auto count = static_cast<vtkIdType>(size);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(count);
@@ -28,7 +33,7 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     auto diameter = namedDoubleArray("diameter", 1, count);
     auto velocity = namedDoubleArray("velocity", 3, count);
     auto speed = namedDoubleArray("speed", 1, count);
-    vtkNew<vtkIntArray> state;
+    vtkNew<vtkTypeInt32Array> state;
     state->SetName("state");
     state->SetNumberOfValues(count);
     for (vtkIdType i = 0; i < count; ++i) {

@@ -1,8 +1,9 @@
 // Particle frames as VTK XML PolyData (.vtp): one vertex per particle, so ParaView shows them
 // at once (Points, or Point Gaussian scaled by `diameter`) without a Glyph filter.
 //
-// Point arrays: id (Int64), diameter [m], velocity [m/s] (3 components), speed [m/s],
-// state (Int32: 0 moving, 1 arrived at a surface). Binary, zlib-compressed, appended.
+// Point arrays: id (Int64), diameter [m], velocity [m/s] (3 components), speed [m/s], state
+// (Int32, ParticleState: 0 active, 1 arrived, 2 escaped); speed is the active scalar.
+// Binary, zlib-compressed, appended. A frame without particles is a valid empty dataset.
 #pragma once
 
 #include "slides/core/vector.h"
@@ -13,15 +14,17 @@
 
 namespace slides {
 
+/// One frame, one entry per particle in every span (all of the same length).
 struct ParticleFrame {
     std::span<const std::uint64_t> id;
-    std::span<const Vec3> position;
-    std::span<const Vec3> velocity;
-    std::span<const double> radius;
-    std::span<const std::int32_t> state;
+    std::span<const Vec3> position;      ///< [m]
+    std::span<const Vec3> velocity;      ///< [m/s]
+    std::span<const double> radius;      ///< [m]
+    std::span<const std::int32_t> state; ///< ParticleState values
 };
 
-/// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure.
+/// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and
+/// std::invalid_argument if the spans differ in length.
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame);
 
 } // namespace slides

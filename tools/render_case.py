@@ -1,0 +1,220 @@
+#!/usr/bin/env python3
+"""Renders a run's output to a PNG, for checking a run without opening ParaView.
+
+    python3 tools/render_case.py CASE/slides out.png [--normal x|y|z]
+
+Shows the last frame listed in particles.pvd (points coloured by speed) in front of a slice of
+carrier.vti through the jet (coloured by magU), seen from the side with a parallel camera; the
+slice is the lattice plane through the fastest gas, moved behind the particles as a backdrop.
+The jet axis is the lattice axis of the largest mean |U| component; the view looks along the
+other axis with the smaller mean |U| component (the extrusion axis of a planar jet), or --normal.
+Needs VTK's Python bindings (Debian: python3-vtk9); renders off screen, without a display
+under xvfb-run (Debian: xvfb).
+"""
+import argparse
+import os
+import shutil
+import sys
+import xml.etree.ElementTree as ElementTree
+
+# Debian's VTK renders through X even off screen: without a display, run under a virtual one.
+if not os.environ.get("DISPLAY") and shutil.which("xvfb-run"):
+    os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
+
+try:
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+except ImportError as error:
+    # A pyenv or venv python3 does not see Debian's python3-vtk9: retry with the system one.
+    if sys.executable != "/usr/bin/python3" and os.path.exists("/usr/bin/python3"):
+        os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
+    sys.exit(f"render_case.py: {error} (Debian: apt-get install python3-vtk9 python3-numpy)")
+
+import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text rendering)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window implementation)
+from vtkmodules.vtkImagingCore import vtkExtractVOI
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
+from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
+from vtkmodules.vtkRenderingCore import (
+    vtkActor,
+    vtkDataSetMapper,
+    vtkPolyDataMapper,
+    vtkRenderer,
+    vtkRenderWindow,
+    vtkTextActor,
+    vtkWindowToImageFilter,
+)
+from vtkmodules.vtkCommonCore import vtkLookupTable
+
+AXES = "xyz"
+
+
+def last_frame(pvd):
+    """(time, path) of the last DataSet listed in the .pvd."""
+    data_sets = ElementTree.parse(pvd).getroot().findall("./Collection/DataSet")
+    if not data_sets:
+        sys.exit(f"render_case.py: {pvd} lists no frames")
+    last = data_sets[-1]
+    return float(last.get("timestep")), os.path.join(os.path.dirname(pvd), last.get("file"))
+
+
+def read(reader_class, path):
+    reader = reader_class()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def lookup_table(value_range, hue_range, saturation_range, value_range_hsv):
+    table = vtkLookupTable()
+    table.SetTableRange(value_range[0], max(value_range[1], value_range[0] + 1e-12))
+    table.SetHueRange(*hue_range)
+    table.SetSaturationRange(*saturation_range)
+    table.SetValueRange(*value_range_hsv)
+    table.Build()
+    return table
+
+
+def scalar_bar(table, title, x_position):
+    bar = vtkScalarBarActor()
+    bar.SetLookupTable(table)
+    bar.SetTitle(title)
+    bar.SetNumberOfLabels(5)
+    bar.SetLabelFormat("%.3g")
+    bar.SetOrientationToHorizontal()
+    bar.SetPosition(x_position, 0.02)
+    bar.SetWidth(0.4)
+    bar.SetHeight(0.12)
+    for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+        text.SetColor(0.1, 0.1, 0.1)
+        text.ShadowOff()
+        text.ItalicOff()
+    return bar
+
+
+def side_view(carrier, normal_option):
+    """(jet axis, view normal, up axis, camera side ±1 along the normal), axes as indices."""
+    mean_component = abs(vtk_to_numpy(carrier.GetPointData().GetArray("U"))).mean(axis=0)
+    jet_axis = int(mean_component.argmax())
+    if normal_option:
+        normal = AXES.index(normal_option)
+    else:
+        normal = min((axis for axis in range(3) if axis != jet_axis),
+                     key=lambda axis: mean_component[axis])
+    up = 3 - jet_axis - normal
+    # The jet points right when (view direction × up) = e_jet; e_normal × e_up = e_jet exactly
+    # when (normal, up, jet) is cyclic, so then the camera looks along +normal.
+    side = -1 if up == (normal + 1) % 3 else 1
+    return jet_axis, normal, up, side
+
+
+def carrier_backdrop(carrier, normal, side):
+    """The lattice plane through the fastest gas (exact lattice values, no interpolation),
+    coloured by magU, and its lookup table."""
+    speed = vtk_to_numpy(carrier.GetPointData().GetArray("magU"))
+    dimensions = carrier.GetDimensions()
+    fastest = [0, 0, 0]
+    carrier.ComputeStructuredCoordinates(carrier.GetPoint(int(speed.argmax())), fastest, [0.0] * 3)
+    extent = [0, dimensions[0] - 1, 0, dimensions[1] - 1, 0, dimensions[2] - 1]
+    extent[2 * normal] = extent[2 * normal + 1] = fastest[normal]
+    plane = vtkExtractVOI()
+    plane.SetInputData(carrier)
+    plane.SetVOI(extent)
+    plane.Update()
+
+    table = lookup_table(carrier.GetPointData().GetArray("magU").GetRange(),
+                         (0.62, 0.55), (0.9, 0.15), (0.45, 1.0))
+    mapper = vtkDataSetMapper()
+    mapper.SetInputConnection(plane.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("magU")
+    mapper.SetLookupTable(table)
+    mapper.UseLookupTableScalarRangeOn()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    # Moved to the lattice face away from the camera, so no particle hides behind it.
+    far_face = carrier.GetBounds()[2 * normal + (1 if side < 0 else 0)]
+    offset = [0.0, 0.0, 0.0]
+    offset[normal] = far_face - plane.GetOutput().GetBounds()[2 * normal]
+    actor.SetPosition(offset)
+    return actor, table
+
+
+def particle_actor(particles):
+    speed_range = (particles.GetPointData().GetArray("speed").GetRange()
+                   if particles.GetNumberOfPoints() else (0.0, 1.0))
+    table = lookup_table(speed_range, (0.0, 0.17), (1.0, 1.0), (0.55, 1.0))
+    mapper = vtkPolyDataMapper()
+    mapper.SetInputData(particles)
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("speed")
+    mapper.SetLookupTable(table)
+    mapper.UseLookupTableScalarRangeOn()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetPointSize(4)
+    actor.GetProperty().RenderPointsAsSpheresOn()
+    return actor, table
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("output_directory", help="the run's output, e.g. CASE/slides")
+    parser.add_argument("png", help="image to write")
+    parser.add_argument("--normal", choices=AXES, help="view along this axis")
+    arguments = parser.parse_args()
+
+    time, frame_file = last_frame(os.path.join(arguments.output_directory, "particles.pvd"))
+    particles = read(vtkXMLPolyDataReader, frame_file)
+    carrier = read(vtkXMLImageDataReader,
+                   os.path.join(arguments.output_directory, "carrier.vti"))
+
+    renderer = vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    jet_axis, normal, up, side = side_view(carrier, arguments.normal)
+    backdrop, gas_table = carrier_backdrop(carrier, normal, side)
+    dots, speed_table = particle_actor(particles)
+    renderer.AddActor(backdrop)
+    renderer.AddActor(dots)
+    renderer.AddActor2D(scalar_bar(speed_table, "particle speed [m/s]", 0.05))
+    renderer.AddActor2D(scalar_bar(gas_table, "carrier magU [m/s]", 0.55))
+    title = vtkTextActor()
+    title.SetInput(f"{os.path.basename(frame_file)}   t = {time:.6g} s   "
+                   f"{particles.GetNumberOfPoints()} particles")
+    title.GetTextProperty().SetColor(0.1, 0.1, 0.1)
+    title.GetTextProperty().SetFontSize(18)
+    title.SetDisplayPosition(12, 570)
+    renderer.AddActor2D(title)
+
+    # From the side: along the view normal, jet axis pointing right, parallel projection.
+    camera = renderer.GetActiveCamera()
+    camera.ParallelProjectionOn()
+    bounds = carrier.GetBounds()
+    centre = [(bounds[2 * axis] + bounds[2 * axis + 1]) / 2 for axis in range(3)]
+    position = list(centre)
+    position[normal] += side * (10 * (bounds[2 * normal + 1] - bounds[2 * normal]) + 1.0)
+    view_up = [0.0, 0.0, 0.0]
+    view_up[up] = 1.0
+    camera.SetFocalPoint(centre)
+    camera.SetPosition(position)
+    camera.SetViewUp(view_up)
+    renderer.ResetCamera()
+    camera.Zoom(1.1)
+
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(1000, 600)
+    window.AddRenderer(renderer)
+    window.Render()
+    image = vtkWindowToImageFilter()
+    image.SetInput(window)
+    image.Update()
+    writer = vtkPNGWriter()
+    writer.SetFileName(arguments.png)
+    writer.SetInputConnection(image.GetOutputPort())
+    writer.Write()
+    print(f"{arguments.png}: {os.path.basename(frame_file)} at t = {time:.6g} s")
+
+
+if __name__ == "__main__":
+    main()
