@@ -13,7 +13,7 @@ namespace slides::test {
 inline Scene singleParticleScene() {
     Scene scene;
     scene.fluid = {1.2, 1.5e-5, 293.15};
-    scene.nozzle.radius = 1e-9;
+    scene.nozzle.radius = 1e-15; // a point source: exact solutions start at the centre
     scene.particles.count = 1;
     scene.particles.density = 2500;
     scene.particles.radius.kind = RadiusDistributionKind::fixed;
