@@ -49,13 +49,14 @@ from vtkmodules.vtkCommonCore import vtkLookupTable
 AXES = "xyz"
 
 
-def last_frame(pvd):
-    """(time, path) of the last DataSet listed in the .pvd."""
+def choose_frame(pvd, time):
+    """(time, path) of the DataSet in the .pvd nearest to time (the last one if time is None)."""
     data_sets = ElementTree.parse(pvd).getroot().findall("./Collection/DataSet")
     if not data_sets:
         sys.exit(f"render_case.py: {pvd} lists no frames")
-    last = data_sets[-1]
-    return float(last.get("timestep")), os.path.join(os.path.dirname(pvd), last.get("file"))
+    chosen = data_sets[-1] if time is None else min(
+        data_sets, key=lambda data_set: abs(float(data_set.get("timestep")) - time))
+    return float(chosen.get("timestep")), os.path.join(os.path.dirname(pvd), chosen.get("file"))
 
 
 def read(reader_class, path):
@@ -162,9 +163,12 @@ def main():
     parser.add_argument("output_directory", help="the run's output, e.g. CASE/slides")
     parser.add_argument("png", help="image to write")
     parser.add_argument("--normal", choices=AXES, help="view along this axis")
+    parser.add_argument("--time", type=float, help="show the frame nearest this time [s] "
+                        "(default: the last frame)")
     arguments = parser.parse_args()
 
-    time, frame_file = last_frame(os.path.join(arguments.output_directory, "particles.pvd"))
+    time, frame_file = choose_frame(os.path.join(arguments.output_directory, "particles.pvd"),
+                                    arguments.time)
     particles = read(vtkXMLPolyDataReader, frame_file)
     carrier = read(vtkXMLImageDataReader,
                    os.path.join(arguments.output_directory, "carrier.vti"))
