@@ -37,49 +37,50 @@ void Stepper::step() {
     ++steps_;
 }
 
+namespace {
+
+/// One step of `scheme` (relaxExactly or advanceExplicitly) over h for every particle with gas
+/// velocity u, the response time τ from the slip u − w (w = v, or the midpoint velocity).
+template <typename Scheme>
+void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
+                 const std::vector<Vec3>& u, const std::vector<Vec3>& w,
+                 const std::vector<double>& radius, const DragParameters& drag, const Vec3& a,
+                 double h) {
+    const auto count = static_cast<std::ptrdiff_t>(x.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const double tau = dragResponseTime(drag, radius[i], (u[i] - w[i]).norm());
+        scheme(x[i], v[i], u[i], tau, a, h);
+    }
+}
+
+} // namespace
+
 void Stepper::advance(double h) {
-    const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    const Vec3 a = bodyAcceleration_;
     carrier_.sample(x, time_, CarrierNeeds{}, gas_);
     const auto& u = gas_.velocity;
+    const Vec3& a = bodyAcceleration_;
 
     switch (scene_.time.integrator) {
     case Integrator::explicitEuler:
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
-            advanceExplicitly(x[i], v[i], u[i], tau, a, h);
-        }
+        advanceEach(advanceExplicitly, x, v, u, v, radius, drag_, a, h);
         break;
     case Integrator::exponentialEuler:
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
-            relaxExactly(x[i], v[i], u[i], tau, a, h);
-        }
+        advanceEach(relaxExactly, x, v, u, v, radius, drag_, a, h);
         break;
     case Integrator::exponentialMidpoint: {
         // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
         // whole step with u and τ frozen at their midpoint values (second order).
-        midpointPositions_ = x;
-        midpointVelocities_ = v;
         auto& xm = midpointPositions_;
         auto& vm = midpointVelocities_;
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            const double tau = dragResponseTime(drag_, radius[i], (u[i] - v[i]).norm());
-            relaxExactly(xm[i], vm[i], u[i], tau, a, 0.5 * h);
-        }
+        xm = x;
+        vm = v;
+        advanceEach(relaxExactly, xm, vm, u, v, radius, drag_, a, 0.5 * h);
         carrier_.sample(xm, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
-        const auto& um = midpointGas_.velocity;
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            const double tau = dragResponseTime(drag_, radius[i], (um[i] - vm[i]).norm());
-            relaxExactly(x[i], v[i], um[i], tau, a, h);
-        }
+        advanceEach(relaxExactly, x, v, midpointGas_.velocity, vm, radius, drag_, a, h);
         break;
     }
     }
