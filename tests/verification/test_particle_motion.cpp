@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace slides {
 namespace {
@@ -104,6 +106,8 @@ TEST_P(EveryIntegrator, ObservedOrderMatchesDesignOrder) {
     }
     for (std::size_t k = 1; k < errors.size(); ++k) {
         const double order = std::log2(errors[k - 1] / errors[k]);
+        std::printf("%s: dt = τ/%g, error %.3e m, observed order %.3f\n",
+                    std::string(GetParam().name).c_str(), 5.0 * (1 << k), errors[k], order);
         EXPECT_NEAR(order, GetParam().order, 0.2)
             << "halving " << k << ": errors " << errors[k - 1] << " -> " << errors[k];
     }
