@@ -184,6 +184,29 @@ TEST_F(VtkOutput, EmptyFrameIsAValidEmptyDataset) {
     EXPECT_NE(pointArray(data, "state", VTK_TYPE_INT32, 1), nullptr);
 }
 
+TEST_F(VtkOutput, FrameCarriesExactlyTheSelectedFields) {
+    // output { fields (velocity state); }: only those arrays, still bit-exact; no active
+    // scalar, since speed is not written.
+    const KnownFrame known;
+    ParticleFrame frame = known.frame();
+    frame.fields = ParticleFieldSet().add(ParticleField::velocity).add(ParticleField::state);
+    const fs::path file = directory_ / "selected.vtp";
+    writeParticlesVtp(file, frame);
+
+    const auto data = readVtp(file);
+    ASSERT_EQ(data->GetNumberOfPoints(), 3);
+    EXPECT_EQ(data->GetPointData()->GetNumberOfArrays(), 2);
+    auto* velocity = pointArray(data, "velocity", VTK_DOUBLE, 3);
+    auto* state = pointArray(data, "state", VTK_TYPE_INT32, 1);
+    ASSERT_TRUE(velocity && state);
+    EXPECT_EQ(data->GetPointData()->GetScalars(), nullptr);
+    for (vtkIdType n = 0; n < 3; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        EXPECT_EQ(velocity->GetComponent(n, 1), known.velocity[i][1]);
+        EXPECT_EQ(state->GetComponent(n, 0), known.state[i]);
+    }
+}
+
 TEST_F(VtkOutput, FrameWithMismatchedArraysIsRejected) {
     KnownFrame known;
     known.radius.pop_back();

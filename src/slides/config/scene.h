@@ -8,6 +8,7 @@
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
+#include "slides/io/particle_fields.h"
 #include "slides/physics/drag.h"
 
 #include <array>
@@ -99,6 +100,7 @@ struct PlaneSurface {
 struct OutputSettings {
     double interval = 0;                       ///< [s] between particle frames
     std::array<int, 3> carrierResolution{};    ///< lattice points of carrier.vti per axis
+    ParticleFieldSet fields = ParticleFieldSet::all(); ///< point arrays of each frame
 };
 
 struct Scene {

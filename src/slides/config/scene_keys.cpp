@@ -1,6 +1,7 @@
 #include "slides/config/scene_keys.h"
 
 #include "slides/integrate/integrator.h"
+#include "slides/io/particle_fields.h"
 #include "slides/physics/drag.h"
 
 #include <sstream>
@@ -157,6 +158,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "Time between particle frames (particles_NNNNNN.vtp)."},
         {"output.carrierResolution", K::integerTriple, "-", "(96 48 48)", {}, R::atLeastOne,
          "Lattice points per axis of carrier.vti over the domain."},
+        {"output.fields", K::wordList, "-", "(id diameter velocity speed state)",
+         namesOf(particleFieldNames()), R::any, "Point arrays of each particle frame."},
     };
     return keys;
 }
@@ -185,6 +188,7 @@ std::string kindName(const KeyDeclaration& key) {
     case KeyKind::scalar: return "scalar";
     case KeyKind::integer: return "integer";
     case KeyKind::word: return "word";
+    case KeyKind::wordList: return "list of words";
     case KeyKind::boolean: return "switch";
     case KeyKind::vector: return "vector";
     case KeyKind::integerTriple: return "3 integers";
@@ -213,6 +217,7 @@ std::string sceneKeysMarkdown() {
         if (!key.allowed.empty()) {
             type.clear();
             for (const auto& name : key.allowed) type += (type.empty() ? "" : " \\| ") + name;
+            if (key.kind == KeyKind::wordList) type = "list of: " + type;
         }
         const std::string fallback =
             key.required() ? "required" : key.optional() ? "—" : "`" + key.fallback + "`";

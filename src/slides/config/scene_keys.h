@@ -11,7 +11,7 @@
 
 namespace slides {
 
-enum class KeyKind { dictionary, scalar, integer, word, boolean, vector, integerTriple };
+enum class KeyKind { dictionary, scalar, integer, word, wordList, boolean, vector, integerTriple };
 
 /// Range a number must lie in.
 enum class KeyRange { any, positive, nonNegative, atLeastOne };

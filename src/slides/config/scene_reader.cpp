@@ -85,15 +85,21 @@ public:
         const std::string value = read(path, [](const Dictionary& d, const std::string& key) {
             return d.word(key);
         });
-        const KeyDeclaration& key = declaration(path);
-        if (!key.allowed.empty() &&
-            std::find(key.allowed.begin(), key.allowed.end(), value) == key.allowed.end()) {
-            std::string valid;
-            for (const auto& name : key.allowed) valid += "\n    " + name;
-            fail(path, "unknown " + leafOf(path) + " '" + value + "'; valid " + leafOf(path) +
-                           " names are:" + valid);
-        }
+        checkAllowed(path, value);
         return value;
+    }
+
+    /// A list of words, each one of the declared allowed names, none twice.
+    std::vector<std::string> wordList(const std::string& path) const {
+        const auto values = read(path, [](const Dictionary& d, const std::string& key) {
+            return d.wordList(key);
+        });
+        for (auto value = values.begin(); value != values.end(); ++value) {
+            checkAllowed(path, *value);
+            if (std::find(values.begin(), value, *value) != value)
+                fail(path, "'" + *value + "' is listed twice");
+        }
+        return values;
     }
 
     /// Throws an InputError located at the key if present, else at its nearest parent.
@@ -150,6 +156,17 @@ private:
         const KeyDeclaration* key = findSceneKey(path);
         if (!key) throw std::logic_error("key not in the key table: " + path);
         return *key;
+    }
+
+    void checkAllowed(const std::string& path, const std::string& value) const {
+        const KeyDeclaration& key = declaration(path);
+        if (key.allowed.empty() ||
+            std::find(key.allowed.begin(), key.allowed.end(), value) != key.allowed.end())
+            return;
+        std::string valid;
+        for (const auto& name : key.allowed) valid += "\n    " + name;
+        fail(path, "unknown " + leafOf(path) + " '" + value + "'; valid " + leafOf(path) +
+                       " names are:" + valid);
     }
 
     void checkRange(const std::string& path, double value) const {
@@ -358,6 +375,10 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
 
     scene.output.interval = keys.scalar("output.interval");
     scene.output.carrierResolution = keys.integerTriple("output.carrierResolution");
+    scene.output.fields = ParticleFieldSet();
+    for (const auto& name : keys.wordList("output.fields"))
+        for (const auto& field : particleFieldNames())
+            if (field.name == name) scene.output.fields.add(field.field);
     return scene;
 }
 

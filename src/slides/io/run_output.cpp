@@ -30,7 +30,8 @@ std::filesystem::path prepared(std::filesystem::path directory) {
 
 RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
                      const CarrierField& carrier)
-    : directory_(prepared(std::move(directory))), series_(directory_ / "particles.pvd") {
+    : directory_(prepared(std::move(directory))), series_(directory_ / "particles.pvd"),
+      fields_(scene.output.fields) {
     writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
                     scene.output.carrierResolution, 0.0);
 }
@@ -52,7 +53,7 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     char name[32];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
     writeParticlesVtp(directory_ / name, ParticleFrame{ids_, positions_, velocities_, radii_,
-                                                       states_});
+                                                       states_, fields_});
     series_.add(stepper.time(), name);
     ++frames_;
 }

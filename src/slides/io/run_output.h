@@ -34,6 +34,7 @@ public:
 private:
     std::filesystem::path directory_;
     PvdSeries series_;
+    ParticleFieldSet fields_;
     int frames_ = 0;
     // Frame scratch: moving particles then arrivals.
     std::vector<std::uint64_t> ids_;

@@ -105,8 +105,12 @@ nlohmann::json sceneSettings(const Scene& scene) {
                                             {"normal", vec(plane.normal)},
                                             {"material", material(plane.material)}};
     settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
+    std::vector<std::string_view> fields;
+    for (const auto& field : particleFieldNames())
+        if (scene.output.fields.contains(field.field)) fields.push_back(field.name);
     settings["output"] = {{"interval", scene.output.interval},
-                          {"carrierResolution", scene.output.carrierResolution}};
+                          {"carrierResolution", scene.output.carrierResolution},
+                          {"fields", fields}};
     return settings;
 }
 

@@ -50,11 +50,14 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     polyData->SetPoints(points);
     polyData->SetVerts(vertices);
     auto* data = polyData->GetPointData();
-    data->AddArray(id);
-    data->AddArray(diameter);
-    data->AddArray(velocity);
-    data->AddArray(speed);
-    data->AddArray(state);
+    const auto add = [&](ParticleField field, vtkDataArray* array) {
+        if (frame.fields.contains(field)) data->AddArray(array);
+    };
+    add(ParticleField::id, id);
+    add(ParticleField::diameter, diameter);
+    add(ParticleField::velocity, velocity);
+    add(ParticleField::speed, speed);
+    add(ParticleField::state, state);
     data->SetActiveScalars("speed");
     data->SetActiveVectors("velocity");
 

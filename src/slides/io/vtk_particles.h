@@ -1,12 +1,14 @@
 // Particle frames as VTK XML PolyData (.vtp): one vertex per particle, so ParaView shows them
 // at once (Points, or Point Gaussian scaled by `diameter`) without a Glyph filter.
 //
-// Point arrays: id (Int64), diameter [m], velocity [m/s] (3 components), speed [m/s], state
-// (Int32, ParticleState: 0 active, 1 arrived, 2 escaped); speed is the active scalar.
+// Point arrays (those in the frame's field set, io/particle_fields.h): id (Int64), diameter [m],
+// velocity [m/s] (3 components), speed [m/s], state (Int32, ParticleState: 0 active,
+// 1 arrived, 2 escaped); speed is the active scalar when written.
 // Binary, zlib-compressed, appended. A frame without particles is a valid empty dataset.
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/io/particle_fields.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -21,6 +23,7 @@ struct ParticleFrame {
     std::span<const Vec3> velocity;      ///< [m/s]
     std::span<const double> radius;      ///< [m]
     std::span<const std::int32_t> state; ///< ParticleState values
+    ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
 };
 
 /// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and

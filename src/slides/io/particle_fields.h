@@ -1,0 +1,44 @@
+// ParticleField: the point arrays a particle frame (.vtp) can carry, chosen by
+// `output { fields (id diameter velocity speed state); }` (default: all of them).
+#pragma once
+
+#include <array>
+#include <bitset>
+#include <string_view>
+
+namespace slides {
+
+enum class ParticleField { id, diameter, velocity, speed, state };
+
+struct ParticleFieldName {
+    ParticleField field;
+    std::string_view name;
+};
+
+constexpr std::array<ParticleFieldName, 5> particleFieldNames() {
+    return {{{ParticleField::id, "id"},
+             {ParticleField::diameter, "diameter"},
+             {ParticleField::velocity, "velocity"},
+             {ParticleField::speed, "speed"},
+             {ParticleField::state, "state"}}};
+}
+
+/// A subset of the particle fields.
+class ParticleFieldSet {
+  public:
+    static ParticleFieldSet all() {
+        ParticleFieldSet every;
+        every.bits_.set();
+        return every;
+    }
+    ParticleFieldSet& add(ParticleField field) {
+        bits_.set(static_cast<std::size_t>(field));
+        return *this;
+    }
+    bool contains(ParticleField field) const { return bits_.test(static_cast<std::size_t>(field)); }
+
+  private:
+    std::bitset<particleFieldNames().size()> bits_;
+};
+
+} // namespace slides
