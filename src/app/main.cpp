@@ -51,9 +51,8 @@ void applyOverrides(const Options& options, slides::Scene& scene) {
 
 void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier, int threads) {
     const double meanRadius = scene.particles.radius.meanRadius();
-    const double responseTime =
-        slides::stokesResponseTime(scene.particles.density, meanRadius, scene.fluid.density,
-                                   scene.fluid.kinematicViscosity);
+    const double responseTime = slides::stokesResponseTime(
+        scene.particles.density, meanRadius, scene.fluid.density, scene.fluid.kinematicViscosity);
     std::printf("slides-track %s: case %s\n", SLIDES_VERSION, scene.caseDirectory.c_str());
     std::printf("  carrier    %s\n", carrier.describe().c_str());
     std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "
@@ -63,8 +62,8 @@ void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier
     for (const auto& entry : slides::integratorNames())
         if (entry.integrator == scene.time.integrator) integrator = entry.name;
     std::printf("  time       dt %.3g s (%.3g response times), end %.3g s, %s, %d thread%s\n",
-                scene.time.dt, scene.time.dt / responseTime, scene.time.endTime,
-                integrator.c_str(), threads, threads == 1 ? "" : "s");
+                scene.time.dt, scene.time.dt / responseTime, scene.time.endTime, integrator.c_str(),
+                threads, threads == 1 ? "" : "s");
     if (scene.time.integrator == slides::Integrator::explicitEuler &&
         scene.time.dt > 2 * responseTime)
         std::printf("  warning    explicitEuler is unstable for dt > 2 response times; use an "

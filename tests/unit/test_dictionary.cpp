@@ -26,8 +26,8 @@ class TemporaryDirectory {
 public:
     TemporaryDirectory() {
         const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() / ("slides_dictionary_" + std::to_string(::getpid()) +
-                                             "_" + test->name());
+        path_ = fs::temp_directory_path() /
+                ("slides_dictionary_" + std::to_string(::getpid()) + "_" + test->name());
         fs::remove_all(path_);
         fs::create_directories(path_);
     }
@@ -172,8 +172,9 @@ TEST_F(CaseFile, HeaderIsSeparateFromTheEntries) {
     EXPECT_DOUBLE_EQ(top.header()->scalar("version"), 2.0);
     EXPECT_FALSE(top.has("FoamFile"));
     const std::vector<std::string> expected{
-        "standoff", "count",        "tiny",     "negative", "half",  "title",  "buoyancy",
-        "stopWhenDone", "path/like:word", "sharedRadius", "included", "fluid", "carrier", "lists"};
+        "standoff", "count",    "tiny",         "negative",       "half",
+        "title",    "buoyancy", "stopWhenDone", "path/like:word", "sharedRadius",
+        "included", "fluid",    "carrier",      "lists"};
     EXPECT_EQ(top.keys(), expected);
 }
 
@@ -236,17 +237,16 @@ TEST_F(CaseFile, NestedDictionariesAndDimensionSets) {
 
 TEST_F(CaseFile, MacrosOfEveryKind) {
     const Dictionary& carrier = top.subDict("carrier");
-    EXPECT_DOUBLE_EQ(carrier.scalar("velocity"), 0.06);  // $..name: parent
-    EXPECT_DOUBLE_EQ(carrier.scalar("density"), 1.1);    // $a.b: scoped, with its dimensions
+    EXPECT_DOUBLE_EQ(carrier.scalar("velocity"), 0.06); // $..name: parent
+    EXPECT_DOUBLE_EQ(carrier.scalar("density"), 1.1);   // $a.b: scoped, with its dimensions
     EXPECT_EQ(exponents(carrier.find("density")), (std::vector<double>{1, -3, 0, 0, 0, 0, 0}));
-    EXPECT_EQ(carrier.integer("deep"), 42);              // ${a.b.c}
-    EXPECT_EQ(carrier.integer("fromTop"), 42);           // $:a.b.c
+    EXPECT_EQ(carrier.integer("deep"), 42);    // ${a.b.c}
+    EXPECT_EQ(carrier.integer("fromTop"), 42); // $:a.b.c
     // key $dictionary; copies the dictionary to the new path
     ASSERT_TRUE(carrier.isDict("copyOfFluid"));
     const Dictionary& copy = carrier.subDict("copyOfFluid");
     EXPECT_EQ(copy.path(), "carrier.copyOfFluid");
-    EXPECT_EQ(copy.subDict("inner").subDict("deeper").path(),
-              "carrier.copyOfFluid.inner.deeper");
+    EXPECT_EQ(copy.subDict("inner").subDict("deeper").path(), "carrier.copyOfFluid.inner.deeper");
     EXPECT_DOUBLE_EQ(copy.scalar("density"), 1.1);
     EXPECT_EQ(exponents(copy.find("nu")), (std::vector<double>{0, 2, -1, 0, 0}));
 
@@ -272,8 +272,7 @@ TEST_F(CaseFile, ListsCountedUniformNestedAndMixed) {
     EXPECT_EQ(nested[1].list().size(), 3u);
     EXPECT_DOUBLE_EQ(nested[1].list()[2].number(), 5);
     EXPECT_TRUE(nested[2].list().empty());
-    EXPECT_EQ(lists.wordList("words"),
-              (std::vector<std::string>{"alpha", "beta gamma", "delta"}));
+    EXPECT_EQ(lists.wordList("words"), (std::vector<std::string>{"alpha", "beta gamma", "delta"}));
     EXPECT_EQ(lists.scalarList("long"), (std::vector<double>{7, 8}));
     const auto& mixed = lists.find("mixed")->items;
     ASSERT_EQ(mixed.size(), 2u);
@@ -293,9 +292,9 @@ TEST_F(CaseFile, ListsCountedUniformNestedAndMixed) {
 TEST(DictionarySyntax, NumbersAndTheirIntegerFlag) {
     const Dictionary d = Dictionary::parseString(
         "a 1e-5; b -3; c .5; d -.5; e +2; f 1.; g 2E3; h 0; i 007;", "numbers");
-    const std::vector<std::pair<const char*, double>> values{
-        {"a", 1e-5}, {"b", -3}, {"c", 0.5}, {"d", -0.5}, {"e", 2},
-        {"f", 1},    {"g", 2e3}, {"h", 0},  {"i", 7}};
+    const std::vector<std::pair<const char*, double>> values{{"a", 1e-5}, {"b", -3}, {"c", 0.5},
+                                                             {"d", -0.5}, {"e", 2},  {"f", 1},
+                                                             {"g", 2e3},  {"h", 0},  {"i", 7}};
     for (const auto& [key, value] : values) EXPECT_DOUBLE_EQ(d.scalar(key), value) << key;
     for (const char* key : {"b", "e", "h", "i"})
         EXPECT_TRUE(d.find(key)->items.front().writtenAsInteger()) << key;
@@ -541,9 +540,8 @@ TEST_P(SyntaxError, IsLocatedAtFileLineAndKey) {
     EXPECT_EQ(error.key(), expected.key) << error.what();
     EXPECT_NE(std::string(error.what()).find(expected.fragment), std::string::npos)
         << "what(): " << error.what() << "\nexpected: " << expected.fragment;
-    EXPECT_EQ(std::string(error.what()).rfind("case/slidesProperties:" +
-                                                  std::to_string(expected.line) + ":",
-                                              0),
+    EXPECT_EQ(std::string(error.what())
+                  .rfind("case/slidesProperties:" + std::to_string(expected.line) + ":", 0),
               0u)
         << error.what();
 }

@@ -18,10 +18,10 @@ struct DragPoint {
 };
 
 constexpr DragPoint dragPoints[] = {
-    {1e-3, 24050.0298255142, 24000.19},   {1e-2, 2422.13752169487, 2400.2},
-    {1e-1, 249.795559830209, 244.26},     {1.0, 28.3344617702831, 27.156},
-    {10.0, 4.31853027052103, 4.2584},     {100.0, 1.09474015626788, 1.0870},
-    {1e3, 0.453456665793695, 0.47109},    {1e4, 0.420383278515279, 0.40523},
+    {1e-3, 24050.0298255142, 24000.19}, {1e-2, 2422.13752169487, 2400.2},
+    {1e-1, 249.795559830209, 244.26},   {1.0, 28.3344617702831, 27.156},
+    {10.0, 4.31853027052103, 4.2584},   {100.0, 1.09474015626788, 1.0870},
+    {1e3, 0.453456665793695, 0.47109},  {1e4, 0.420383278515279, 0.40523},
     {1e5, 0.471496219731148, 0.50176},
 };
 
@@ -37,8 +37,7 @@ TEST_P(HaiderLevenspiel, FollowsStandardDragCurve) {
     // Haider & Levenspiel fitted the sphere data to within a few per cent; the largest
     // deviation from the standard curve over 1e-3..1e5 is 6.0 % at Re = 1e5.
     const DragPoint point = GetParam();
-    EXPECT_NEAR(dragCoefficient(DragModel::haiderLevenspiel, point.reynolds) /
-                    point.standardCurve,
+    EXPECT_NEAR(dragCoefficient(DragModel::haiderLevenspiel, point.reynolds) / point.standardCurve,
                 1.0, 0.065);
 }
 

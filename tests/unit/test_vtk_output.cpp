@@ -44,7 +44,7 @@ namespace fs = std::filesystem;
 
 /// Each test writes into a fresh directory of its own, removed afterwards.
 class VtkOutput : public testing::Test {
-  protected:
+protected:
     void SetUp() override {
         const auto* test = testing::UnitTest::GetInstance()->current_test_info();
         directory_ = fs::temp_directory_path() /
@@ -106,8 +106,7 @@ vtkSmartPointer<vtkImageData> readVti(const fs::path& file) {
 vtkDataArray* pointArray(vtkDataSet* data, const char* name, int vtkType, int components) {
     vtkDataArray* array = data->GetPointData()->GetArray(name);
     EXPECT_NE(array, nullptr) << "no point array " << name;
-    if (array == nullptr)
-        return nullptr;
+    if (array == nullptr) return nullptr;
     EXPECT_EQ(array->GetDataType(), vtkType) << name;
     EXPECT_EQ(array->GetNumberOfComponents(), components) << name;
     EXPECT_EQ(array->GetNumberOfTuples(), data->GetNumberOfPoints()) << name;
@@ -221,14 +220,12 @@ std::vector<std::pair<double, std::string>> pvdEntries(const fs::path& file) {
     EXPECT_EQ(parser->Parse(), 1) << "not valid XML: " << file;
     vtkXMLDataElement* root = parser->GetRootElement();
     EXPECT_NE(root, nullptr);
-    if (root == nullptr)
-        return {};
+    if (root == nullptr) return {};
     EXPECT_STREQ(root->GetName(), "VTKFile");
     EXPECT_STREQ(root->GetAttribute("type"), "Collection");
     vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
     EXPECT_NE(collection, nullptr);
-    if (collection == nullptr)
-        return {};
+    if (collection == nullptr) return {};
     std::vector<std::pair<double, std::string>> entries;
     for (int n = 0; n < collection->GetNumberOfNestedElements(); ++n) {
         vtkXMLDataElement* dataSet = collection->GetNestedElement(n);
@@ -274,7 +271,7 @@ TEST_F(VtkOutput, FailedPvdRewriteLeavesNoEntryBehind) {
 
 /// U = A x + b, exact in binary on a dyadic lattice; counts its sample() calls.
 class LinearFlow : public CarrierField {
-  public:
+public:
     LinearFlow() {
         gradient_ << 1, 2, 0, -0.5, 0, 4, 0.25, -3, 1;
         offset_ << 10, -20, 0.5;
@@ -285,8 +282,7 @@ class LinearFlow : public CarrierField {
         lastBatchSize = points.size();
         lastTime = time;
         out.resize(points.size(), needs);
-        for (std::size_t i = 0; i < points.size(); ++i)
-            out.velocity[i] = at(points[i]);
+        for (std::size_t i = 0; i < points.size(); ++i) out.velocity[i] = at(points[i]);
     }
     std::string describe() const override { return "linear test flow"; }
     Vec3 at(const Vec3& x) const { return gradient_ * x + offset_; }
@@ -295,7 +291,7 @@ class LinearFlow : public CarrierField {
     mutable std::size_t lastBatchSize = 0;
     mutable double lastTime = -1;
 
-  private:
+private:
     Mat3 gradient_;
     Vec3 offset_;
 };
@@ -357,8 +353,7 @@ TEST_F(VtkOutput, CarrierLatticeWithAFlatAxisLiesAtBoxMin) {
     for (vtkIdType n = 0; n < 6; ++n) {
         const Vec3 x(image->GetPoint(n)[0], image->GetPoint(n)[1], image->GetPoint(n)[2]);
         EXPECT_EQ(x.z(), 0.25);
-        for (int c = 0; c < 3; ++c)
-            EXPECT_EQ(u->GetComponent(n, c), flow.at(x)[c]);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(u->GetComponent(n, c), flow.at(x)[c]);
     }
     EXPECT_THROW(writeCarrierVti(directory_ / "none.vti", flow, box, {3, 0, 1}, 0.0),
                  std::invalid_argument);
@@ -443,8 +438,7 @@ TEST_F(VtkOutput, UnwritableDirectoryGivesOutputErrorNamingPathAndReason) {
 }
 
 TEST_F(VtkOutput, ReadOnlyDirectoryGivesPermissionDenied) {
-    if (::geteuid() == 0)
-        GTEST_SKIP() << "root writes into read-only directories";
+    if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only directories";
     const fs::path locked = directory_ / "locked";
     fs::create_directory(locked);
     writeTextAtomically(locked / "particles.pvd", "original");

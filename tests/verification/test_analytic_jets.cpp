@@ -86,8 +86,7 @@ Mat3 differenceGradient(const CarrierField& field, const Vec3& point, double h) 
 double simpson(const std::function<double(double)>& f, double lo, double hi, int n) {
     const double h = (hi - lo) / n;
     double sum = f(lo) + f(hi);
-    for (int k = 1; k < n; ++k)
-        sum += (k % 2 ? 4 : 2) * f(lo + k * h);
+    for (int k = 1; k < n; ++k) sum += (k % 2 ? 4 : 2) * f(lo + k * h);
     return sum * h / 3;
 }
 
@@ -233,12 +232,10 @@ enum class Carrier { planarSech2, axisymmetricSech2, roundLaminar };
 
 std::unique_ptr<CarrierField> makeJet(Carrier carrier, const JetNozzle& n = nozzle()) {
     switch (carrier) {
-    case Carrier::planarSech2:
-        return std::make_unique<AnalyticJet>(n, sech2(JetGeometry::planar));
+    case Carrier::planarSech2: return std::make_unique<AnalyticJet>(n, sech2(JetGeometry::planar));
     case Carrier::axisymmetricSech2:
         return std::make_unique<AnalyticJet>(n, sech2(JetGeometry::axisymmetric));
-    case Carrier::roundLaminar:
-        return std::make_unique<RoundLaminarJet>(n, roundJet());
+    case Carrier::roundLaminar: return std::make_unique<RoundLaminarJet>(n, roundJet());
     }
     return nullptr;
 }
@@ -287,8 +284,7 @@ TEST_P(JetGradient, ExactlyOnTheAxisTheHoopTermTakesItsLimit) {
         EXPECT_EQ(u.y(), 0.0);
         EXPECT_EQ(u.z(), 0.0);
         EXPECT_GT(u.x(), 0.0);
-        if (a < 1e-3)
-            continue; // the exit plane itself: central differences straddle the jump
+        if (a < 1e-3) continue; // the exit plane itself: central differences straddle the jump
         const Mat3 numeric = differenceGradient(*field, point, 1e-6);
         EXPECT_LE((gradient - numeric).norm(), 2e-6 * gradient.norm() + 1e-6) << gradient;
         if (GetParam() != Carrier::planarSech2) {
@@ -407,8 +403,7 @@ TEST(JetFrame, CoreEndIsContinuousInUAndTheGasBehindTheNozzleIsAtRest) {
 TEST(JetFrame, BatchSamplingMatchesPointSamplingAndFillsOnlyWhatIsAsked) {
     const RoundLaminarJet jet(nozzle(), roundJet());
     std::vector<Vec3> points;
-    for (int k = 0; k < 50; ++k)
-        points.push_back(at(-0.01 + 0.004 * k, 1e-4 * k, -5e-5 * k));
+    for (int k = 0; k < 50; ++k) points.push_back(at(-0.01 + 0.004 * k, 1e-4 * k, -5e-5 * k));
     CarrierSample out;
     jet.sample(points, 0.0, {.velocityGradient = true}, out);
     ASSERT_EQ(out.velocity.size(), points.size());

@@ -37,9 +37,9 @@ TEST_P(EveryIntegrator, SettlesAtTheRootOfTheForceBalance) {
     const DragParameters drag{scene.physics.drag, scene.fluid.density,
                               scene.fluid.kinematicViscosity, scene.particles.density};
     const double radius = scene.particles.radius.value;
-    const double weight = bodyAcceleration(scene.physics.gravity, scene.particles.density,
-                                           scene.fluid.density, true)
-                              .norm();
+    const double weight =
+        bodyAcceleration(scene.physics.gravity, scene.particles.density, scene.fluid.density, true)
+            .norm();
     double low = 0, high = 10;
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (low + high);
@@ -131,9 +131,9 @@ TEST_P(ExponentialIntegrator, StableAtThousandResponseTimes) {
     scene.time.endTime = 500 * scene.time.dt;
     const Vec3 stream(20.0, 0, 0);
     const auto [x, v] = runSingleParticle(scene, test::UniformFlow(stream));
-    const Vec3 terminal = stream + tau * bodyAcceleration(scene.physics.gravity,
-                                                          scene.particles.density,
-                                                          scene.fluid.density, true);
+    const Vec3 terminal =
+        stream + tau * bodyAcceleration(scene.physics.gravity, scene.particles.density,
+                                        scene.fluid.density, true);
     EXPECT_TRUE(x.allFinite());
     EXPECT_LT((v - terminal).norm(), 1e-12 * terminal.norm());
 }

@@ -161,11 +161,12 @@ int runCli(const std::string& arguments, const std::filesystem::path& log) {
 TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
     ScratchDirectory scratch("default-run");
     const auto output = scratch.path / "out";
-    ASSERT_EQ(runCli(defaultCase.string() + " --quiet --output " + output.string(),
-                     scratch.path / "log"),
-              0)
+    ASSERT_EQ(
+        runCli(defaultCase.string() + " --quiet --output " + output.string(), scratch.path / "log"),
+        0)
         << slurp(scratch.path / "log");
-    for (const char* file : {"particles.pvd", "carrier.vti", "summary.json", "particles_000000.vtp"})
+    for (const char* file :
+         {"particles.pvd", "carrier.vti", "summary.json", "particles_000000.vtp"})
         EXPECT_TRUE(std::filesystem::exists(output / file)) << file;
     const auto summary = nlohmann::json::parse(slurp(output / "summary.json"));
     const long injected = summary["particles"]["injected"];
@@ -207,14 +208,16 @@ TEST_P(CommandLineRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
     ScratchDirectory scratch(broken.name);
     writeBrokenCase(scratch, broken.from, broken.to);
     const std::string original = slurp(defaultCase / "constant" / "slidesProperties");
-    const auto line = 1 + std::count(original.begin(), original.begin() + original.find(broken.from),
-                                     '\n') + broken.lineOffset;
+    const auto line =
+        1 + std::count(original.begin(), original.begin() + original.find(broken.from), '\n') +
+        broken.lineOffset;
     const auto log = scratch.path / "log";
     EXPECT_EQ(runCli(scratch.path.string() + " --quiet", log), 2);
     const std::string message = slurp(log);
     const std::string where = "slidesProperties:" + std::to_string(line) + ": ";
     EXPECT_NE(message.find(where + broken.expected), std::string::npos)
-        << "expected '" << where << broken.expected << "' in:\n" << message;
+        << "expected '" << where << broken.expected << "' in:\n"
+        << message;
     EXPECT_EQ(message.find("error:"), message.rfind("error:")) << "one message: " << message;
     EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"))
         << "bad input must not create output";

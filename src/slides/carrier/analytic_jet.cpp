@@ -40,8 +40,7 @@ ProfileSample BickleyProfile::at(double s, double y) const {
 namespace {
 
 void require(bool condition, const std::string& message) {
-    if (!condition)
-        throw std::invalid_argument("analyticJet: " + message);
+    if (!condition) throw std::invalid_argument("analyticJet: " + message);
 }
 
 std::string number(double value) {
@@ -92,8 +91,7 @@ void AnalyticJet::sample(std::span<const Vec3> points, double /*time: steady*/, 
 }
 
 double AnalyticJet::centrelineVelocity(double axialDistance) const {
-    if (axialDistance < 0)
-        return 0;
+    if (axialDistance < 0) return 0;
     return profile_.C1 / std::cbrt(frame_.similarityCoordinate(axialDistance));
 }
 

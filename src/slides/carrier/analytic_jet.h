@@ -51,7 +51,7 @@ struct BickleyProfile {
 };
 
 class AnalyticJet final : public CarrierField {
-  public:
+public:
     /// Throws std::invalid_argument (clear message) for U0 ≤ 0, ν ≤ 0 without explicit
     /// coefficients, only one of C1/C3, non-positive C1/C3, a C2 that contradicts continuity
     /// (|C2 − C1/(3C3)| > 1e-9·C1/(3C3)), or an invalid nozzle (see JetFrame).
@@ -73,7 +73,7 @@ class AnalyticJet final : public CarrierField {
     /// C1 s^(−1/3) beyond [m/s].
     double centrelineVelocity(double axialDistance) const;
 
-  private:
+private:
     BickleyProfile profile_;
     JetFrame frame_;
 };

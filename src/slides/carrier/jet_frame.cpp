@@ -11,8 +11,7 @@ namespace {
 constexpr double unitTolerance = 1e-9;
 
 void require(bool condition, const std::string& message) {
-    if (!condition)
-        throw std::invalid_argument("jet nozzle: " + message);
+    if (!condition) throw std::invalid_argument("jet nozzle: " + message);
 }
 
 } // namespace

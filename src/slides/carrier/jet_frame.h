@@ -57,7 +57,7 @@ struct ProfileSample {
 };
 
 class JetFrame {
-  public:
+public:
     /// Throws std::invalid_argument for a non-positive radius, a non-unit axis, a cross-span
     /// direction that is not a unit vector ⟂ axis (planar only), a negative core length or a
     /// non-positive virtual origin.
@@ -81,7 +81,7 @@ class JetFrame {
     void sample(const Profile& profile, std::span<const Vec3> points, CarrierNeeds needs,
                 CarrierSample& out) const;
 
-  private:
+private:
     JetNozzle nozzle_;
     JetGeometry geometry_;
     double coreLength_;
@@ -101,8 +101,7 @@ void JetFrame::sample(const Profile& profile, std::span<const Vec3> points, Carr
         const double axial = offset.dot(axis);
         if (axial < 0) { // behind the exit plane: at rest
             out.velocity[i].setZero();
-            if (needs.velocityGradient)
-                out.velocityGradient[i].setZero();
+            if (needs.velocityGradient) out.velocityGradient[i].setZero();
             continue;
         }
         const bool inCore = axial < coreLength_;
@@ -118,16 +117,13 @@ void JetFrame::sample(const Profile& profile, std::span<const Vec3> points, Carr
             across = y > 0 ? Vec3(radial / y) : axisRadial_;
         }
         ProfileSample p = profile.at(s, y);
-        if (inCore)
-            p = ProfileSample{p.u, 0.0, 0.0, p.dudY, 0.0, 0.0, 0.0}; // frozen, v = 0
+        if (inCore) p = ProfileSample{p.u, 0.0, 0.0, p.dudY, 0.0, 0.0, 0.0}; // frozen, v = 0
         out.velocity[i] = p.u * axis + p.v * across;
-        if (!needs.velocityGradient)
-            continue;
+        if (!needs.velocityGradient) continue;
         Mat3& gradient = out.velocityGradient[i];
         gradient.noalias() = axis * (p.dudS * axis + p.dudY * across).transpose();
         gradient.noalias() += across * (p.dvdS * axis + p.dvdY * across).transpose();
-        if (!planar)
-            gradient += p.vOverY * (transverse_ - across * across.transpose());
+        if (!planar) gradient += p.vOverY * (transverse_ - across * across.transpose());
     }
 }
 

@@ -10,9 +10,9 @@ std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
     switch (carrier.type) {
     case CarrierType::analyticJet:
         return std::make_unique<AnalyticJet>(
-            scene.nozzle, AnalyticJetParameters{carrier.profile, carrier.nozzleVelocity,
-                                                carrier.viscosity, carrier.coreLength, carrier.C1,
-                                                carrier.C2, carrier.C3});
+            scene.nozzle,
+            AnalyticJetParameters{carrier.profile, carrier.nozzleVelocity, carrier.viscosity,
+                                  carrier.coreLength, carrier.C1, carrier.C2, carrier.C3});
     case CarrierType::roundLaminarJet:
         return std::make_unique<RoundLaminarJet>(
             scene.nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,

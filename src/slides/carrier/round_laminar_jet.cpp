@@ -36,8 +36,7 @@ ProfileSample RoundLaminarProfile::at(double s, double r) const {
 namespace {
 
 void require(bool condition, const std::string& message) {
-    if (!condition)
-        throw std::invalid_argument("roundLaminarJet: " + message);
+    if (!condition) throw std::invalid_argument("roundLaminarJet: " + message);
 }
 
 RoundLaminarProfile roundProfile(double K, const RoundLaminarJetParameters& jet) {
@@ -68,8 +67,7 @@ void RoundLaminarJet::sample(std::span<const Vec3> points, double /*time: steady
 }
 
 double RoundLaminarJet::centrelineVelocity(double axialDistance) const {
-    if (axialDistance < 0)
-        return 0;
+    if (axialDistance < 0) return 0;
     return profile_.amplitude / frame_.similarityCoordinate(axialDistance);
 }
 

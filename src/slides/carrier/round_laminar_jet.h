@@ -38,7 +38,7 @@ struct RoundLaminarProfile {
 };
 
 class RoundLaminarJet final : public CarrierField {
-  public:
+public:
     /// Throws std::invalid_argument for U0 ≤ 0, ν ≤ 0 or an invalid nozzle (see JetFrame).
     RoundLaminarJet(const JetNozzle& nozzle, const RoundLaminarJetParameters& parameters);
 
@@ -54,7 +54,7 @@ class RoundLaminarJet final : public CarrierField {
     /// 3K/(8πν s) beyond [m/s].
     double centrelineVelocity(double axialDistance) const;
 
-  private:
+private:
     double momentumFlux_;
     RoundLaminarProfile profile_;
     JetFrame frame_;

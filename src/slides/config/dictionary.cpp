@@ -89,9 +89,7 @@ public:
     }
 
 private:
-    char at(std::size_t position) const {
-        return position < text_.size() ? text_[position] : '\0';
-    }
+    char at(std::size_t position) const { return position < text_.size() ? text_[position] : '\0'; }
 
     bool startsComment(std::size_t position) const {
         return at(position) == '/' && (at(position + 1) == '/' || at(position + 1) == '*');
@@ -118,8 +116,8 @@ private:
                 const std::size_t close = text_.find("*/", position_ + 2);
                 if (close == std::string_view::npos)
                     throw LexFailure{line_, "comment '/*' is never closed with '*/'"};
-                line_ += static_cast<int>(std::count(text_.begin() + position_,
-                                                     text_.begin() + close, '\n'));
+                line_ += static_cast<int>(
+                    std::count(text_.begin() + position_, text_.begin() + close, '\n'));
                 position_ = close + 2;
             } else {
                 return;
@@ -203,8 +201,8 @@ private:
             if (c == '"') return;
             if (c == '\n')
                 throw LexFailure{opened, "string is not closed on its line: missing '\"'"};
-            if (c == '\\' && (at(position_) == '"' || at(position_) == '\\' ||
-                              at(position_) == '\n')) {
+            if (c == '\\' &&
+                (at(position_) == '"' || at(position_) == '\\' || at(position_) == '\n')) {
                 const char escaped = text_[position_++];
                 if (escaped == '\\') token.text += '\\';
                 if (escaped == '\n') ++line_;
@@ -230,9 +228,8 @@ private:
             token.text = std::string(text_.substr(position_, end - position_));
             position_ = end;
         }
-        if (token.text.empty() || std::any_of(token.text.begin(), token.text.end(), [](char c) {
-                return !isWordCharacter(c);
-            }))
+        if (token.text.empty() || std::any_of(token.text.begin(), token.text.end(),
+                                              [](char c) { return !isWordCharacter(c); }))
             throw LexFailure{line_, "'$' must be followed by the name of an entry, as in "
                                     "$name, $a.b, $:a.b, $..a or ${a.b}"};
     }
@@ -287,8 +284,8 @@ std::string spellItems(const std::vector<DictItem>& items) {
     }
     if (shown < items.size()) spelled += " ...";
     if (items.back().line() != items.front().line())
-        spelled += " (is a ';' missing at the end of line " +
-                   std::to_string(items.front().line()) + "?)";
+        spelled +=
+            " (is a ';' missing at the end of line " + std::to_string(items.front().line()) + "?)";
     return spelled;
 }
 
@@ -413,10 +410,10 @@ private:
                                               ? "the end of the file"
                                               : "'}' on line " + std::to_string(token.line);
                 if (entry.items.empty() && !entry.dimensions)
-                    fail(lexer, entry.line, key, "missing value and ';' after the keyword (found " +
-                                                     found + ")");
-                fail(lexer, valueEnd, key, "missing ';' at the end of the entry (found " + found +
-                                               ")");
+                    fail(lexer, entry.line, key,
+                         "missing value and ';' after the keyword (found " + found + ")");
+                fail(lexer, valueEnd, key,
+                     "missing ';' at the end of the entry (found " + found + ")");
             }
             if (token.is('{')) {
                 if (lastIsWord)
@@ -446,8 +443,8 @@ private:
     }
 
     /// Appends the item(s) that token starts: one value, a list, or a $reference's values.
-    void parseItem(Lexer& lexer, const Token& token, std::vector<DictItem>& items,
-                   DictEntry& entry, const std::string& key, bool inList) {
+    void parseItem(Lexer& lexer, const Token& token, std::vector<DictItem>& items, DictEntry& entry,
+                   const std::string& key, bool inList) {
         switch (token.kind) {
         case Token::Kind::number:
             if (token.integer && token.number >= 0) {
@@ -539,8 +536,7 @@ private:
         if (value.size() != 1 || !take(lexer, key).is('}'))
             fail(lexer, open.line, key, "a uniform list N{value} holds exactly one value");
         return DictItem::makeList(
-            std::vector<DictItem>(static_cast<std::size_t>(size.number), value.front()),
-            size.line);
+            std::vector<DictItem>(static_cast<std::size_t>(size.number), value.front()), size.line);
     }
 
     DimensionSet parseDimensions(Lexer& lexer, const Token& open, const std::string& key) {
@@ -580,8 +576,8 @@ private:
         if (referenced.dimensions && !inList) {
             if (entry.dimensions)
                 fail(lexer, reference.line, key,
-                     "the entry has two dimension sets [...] (one comes from '$" +
-                         reference.text + "')");
+                     "the entry has two dimension sets [...] (one comes from '$" + reference.text +
+                         "')");
             entry.dimensions = referenced.dimensions;
         }
     }
@@ -669,8 +665,7 @@ private:
         if (file.is_relative()) file = std::filesystem::path(lexer.file()).parent_path() / file;
         std::error_code error;
         const auto canonical = std::filesystem::weakly_canonical(file, error);
-        if (std::find(includeChain_.begin(), includeChain_.end(), canonical) !=
-            includeChain_.end())
+        if (std::find(includeChain_.begin(), includeChain_.end(), canonical) != includeChain_.end())
             fail(lexer, token.line, into.path(),
                  "recursive #include: '" + file.string() + "' is already being read");
         if (includeDepth_ >= maxIncludeDepth)
@@ -903,8 +898,7 @@ const DictItem& Dictionary::singleItem(std::string_view key, const std::string& 
 
 double Dictionary::scalar(std::string_view key) const {
     const DictItem& item = singleItem(key, "a number");
-    if (!item.isNumber())
-        failAt(key, item.line(), "expected a number, found " + item.describe());
+    if (!item.isNumber()) failAt(key, item.line(), "expected a number, found " + item.describe());
     return item.number();
 }
 
@@ -919,9 +913,8 @@ long Dictionary::integer(std::string_view key) const {
 
 std::string Dictionary::word(std::string_view key) const {
     const DictItem& item = singleItem(key, "a word");
-    const bool plainString =
-        item.isString() && !item.text().empty() &&
-        std::all_of(item.text().begin(), item.text().end(), isWordCharacter);
+    const bool plainString = item.isString() && !item.text().empty() &&
+                             std::all_of(item.text().begin(), item.text().end(), isWordCharacter);
     if (!item.isWord() && !plainString)
         failAt(key, item.line(), "expected a word, found " + item.describe());
     return item.text();
@@ -930,8 +923,7 @@ std::string Dictionary::word(std::string_view key) const {
 std::string Dictionary::text(std::string_view key) const {
     const DictItem& item = singleItem(key, "a word or a quoted string");
     if (!item.isWord() && !item.isString())
-        failAt(key, item.line(),
-               "expected a word or a quoted string, found " + item.describe());
+        failAt(key, item.line(), "expected a word or a quoted string, found " + item.describe());
     return item.text();
 }
 
@@ -966,15 +958,14 @@ Eigen::Vector3d Dictionary::vector(std::string_view key) const {
 std::vector<double> Dictionary::scalarList(std::string_view key) const {
     const DictItem& item = singleItem(key, "a list of numbers ( ... )");
     if (!item.isList())
-        failAt(key, item.line(),
-               "expected a list of numbers ( ... ), found " + item.describe());
+        failAt(key, item.line(), "expected a list of numbers ( ... ), found " + item.describe());
     std::vector<double> numbers;
     numbers.reserve(item.list().size());
     for (const DictItem& element : item.list()) {
         if (!element.isNumber())
             failAt(key, element.line(),
-                   "expected a list of numbers, but element " +
-                       std::to_string(numbers.size() + 1) + " is " + element.describe());
+                   "expected a list of numbers, but element " + std::to_string(numbers.size() + 1) +
+                       " is " + element.describe());
         numbers.push_back(element.number());
     }
     return numbers;
@@ -983,8 +974,7 @@ std::vector<double> Dictionary::scalarList(std::string_view key) const {
 std::vector<std::string> Dictionary::wordList(std::string_view key) const {
     const DictItem& item = singleItem(key, "a list of words ( ... )");
     if (!item.isList())
-        failAt(key, item.line(), "expected a list of words ( ... ), found " +
-                                            item.describe());
+        failAt(key, item.line(), "expected a list of words ( ... ), found " + item.describe());
     std::vector<std::string> words;
     words.reserve(item.list().size());
     for (const DictItem& element : item.list()) {

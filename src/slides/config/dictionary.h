@@ -80,7 +80,7 @@ private:
 struct DictEntry {
     std::string keyword;
     int line = 0;
-    std::string file; ///< where the entry was written (an #include'd file, maybe)
+    std::string file;            ///< where the entry was written (an #include'd file, maybe)
     std::vector<DictItem> items; ///< values, dimension set excluded; empty for a sub-dictionary
     std::optional<DimensionSet> dimensions;
     std::shared_ptr<const Dictionary> dictionary; ///< set for a sub-dictionary entry
@@ -123,10 +123,10 @@ public:
     // Typed reads: exactly one item of the right kind, else an InputError at the key that says
     // what was expected and what was found. A missing key is an error at the dictionary's line.
     double scalar(std::string_view key) const;
-    long integer(std::string_view key) const; ///< a whole number
+    long integer(std::string_view key) const;     ///< a whole number
     std::string word(std::string_view key) const; ///< a word, or a quoted string without spaces
     std::string text(std::string_view key) const; ///< a word or any quoted string
-    bool boolean(std::string_view key) const; ///< on/off, true/false, yes/no
+    bool boolean(std::string_view key) const;     ///< on/off, true/false, yes/no
     Eigen::Vector3d vector(std::string_view key) const; ///< (x y z)
     std::vector<double> scalarList(std::string_view key) const;
     std::vector<std::string> wordList(std::string_view key) const;

@@ -30,9 +30,9 @@ enum class CarrierType { analyticJet, roundLaminarJet };
 
 struct CarrierSettings {
     CarrierType type = CarrierType::analyticJet;
-    JetGeometry profile = JetGeometry::axisymmetric;      ///< analyticJet only
-    double nozzleVelocity = 0;                             ///< U0 [m/s]
-    double coreLength = 0;                                 ///< unentrained core [m]
+    JetGeometry profile = JetGeometry::axisymmetric; ///< analyticJet only
+    double nozzleVelocity = 0;                       ///< U0 [m/s]
+    double coreLength = 0;                           ///< unentrained core [m]
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
     std::optional<double> C1, C2, C3; ///< Eq. 5.10/5.11 coefficients when given explicitly
 };
@@ -41,14 +41,14 @@ enum class RadiusDistributionKind { fixed, normal, logNormal };
 
 struct RadiusDistribution {
     RadiusDistributionKind kind = RadiusDistributionKind::fixed;
-    double value = 0;  ///< fixed radius [m]
-    double mean = 0;   ///< normal: mean radius [m]
-    double standardDeviation = 0; ///< normal [m]
-    double median = 0; ///< logNormal: median radius [m]
+    double value = 0;                      ///< fixed radius [m]
+    double mean = 0;                       ///< normal: mean radius [m]
+    double standardDeviation = 0;          ///< normal [m]
+    double median = 0;                     ///< logNormal: median radius [m]
     double geometricStandardDeviation = 1; ///< logNormal: e^σ of ln R (≥ 1)
-    double minimum = 0; ///< draws below are redrawn [m]
-    double maximum = 0; ///< draws above are redrawn [m]
-    double meanRadius() const; ///< expected value of the (untruncated) distribution [m]
+    double minimum = 0;                    ///< draws below are redrawn [m]
+    double maximum = 0;                    ///< draws above are redrawn [m]
+    double meanRadius() const;             ///< expected value of the (untruncated) distribution [m]
 };
 
 /// Elastic and adhesive properties (Table 5.2); read and checked now, used by the collision
@@ -83,8 +83,8 @@ struct PhysicsSettings {
 };
 
 struct TimeSettings {
-    double dt = 0;      ///< [s]
-    double endTime = 0; ///< [s]; the run also stops earlier when stopWhenAllDone
+    double dt = 0;               ///< [s]
+    double endTime = 0;          ///< [s]; the run also stops earlier when stopWhenAllDone
     bool stopWhenAllDone = true; ///< stop once every particle has arrived or escaped
     Integrator integrator = Integrator::exponentialMidpoint;
 };
@@ -98,8 +98,8 @@ struct PlaneSurface {
 };
 
 struct OutputSettings {
-    double interval = 0;                       ///< [s] between particle frames
-    std::array<int, 3> carrierResolution{};    ///< lattice points of carrier.vti per axis
+    double interval = 0;                               ///< [s] between particle frames
+    std::array<int, 3> carrierResolution{};            ///< lattice points of carrier.vti per axis
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< point arrays of each frame
 };
 

@@ -19,6 +19,8 @@ template <typename Table> std::vector<std::string> namesOf(const Table& table) {
 std::vector<KeyDeclaration> declareKeys() {
     using K = KeyKind;
     using R = KeyRange;
+    // One declaration per row, read as the table it is.
+    // clang-format off
     std::vector<KeyDeclaration> keys = {
         {"carrier", K::dictionary, "-", "", {}, R::any, "The carrier gas field."},
         {"carrier.type", K::word, "-", "analyticJet", {"analyticJet", "roundLaminarJet"}, R::any,
@@ -161,6 +163,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"output.fields", K::wordList, "-", "(id diameter velocity speed state)",
          namesOf(particleFieldNames()), R::any, "Point arrays of each particle frame."},
     };
+    // clang-format on
     return keys;
 }
 
@@ -219,8 +222,9 @@ std::string sceneKeysMarkdown() {
             for (const auto& name : key.allowed) type += (type.empty() ? "" : " \\| ") + name;
             if (key.kind == KeyKind::wordList) type = "list of: " + type;
         }
-        const std::string fallback =
-            key.required() ? "required" : key.optional() ? "—" : "`" + key.fallback + "`";
+        const std::string fallback = key.required()   ? "required"
+                                     : key.optional() ? "—"
+                                                      : "`" + key.fallback + "`";
         table << "| `" << key.path << "` | " << type << " | " << key.unit << " | " << fallback
               << " | " << key.doc << " |\n";
     }

@@ -17,10 +17,10 @@ enum class KeyKind { dictionary, scalar, integer, word, wordList, boolean, vecto
 enum class KeyRange { any, positive, nonNegative, atLeastOne };
 
 struct KeyDeclaration {
-    std::string path;      ///< dotted path; "*" stands for any one user-chosen name
+    std::string path; ///< dotted path; "*" stands for any one user-chosen name
     KeyKind kind;
-    std::string unit;      ///< SI unit, "-" when dimensionless
-    std::string fallback;  ///< default as written in a dictionary; "" required; "-" optional
+    std::string unit;     ///< SI unit, "-" when dimensionless
+    std::string fallback; ///< default as written in a dictionary; "" required; "-" optional
     std::vector<std::string> allowed; ///< allowed words (word keys only)
     KeyRange range = KeyRange::any;
     std::string doc;

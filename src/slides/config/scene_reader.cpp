@@ -25,9 +25,8 @@ public:
     }
 
     double scalar(const std::string& path) const {
-        const double value = read(path, [](const Dictionary& d, const std::string& key) {
-            return d.scalar(key);
-        });
+        const double value =
+            read(path, [](const Dictionary& d, const std::string& key) { return d.scalar(key); });
         checkRange(path, value);
         return value;
     }
@@ -38,23 +37,20 @@ public:
     }
 
     long integer(const std::string& path) const {
-        const long value = read(path, [](const Dictionary& d, const std::string& key) {
-            return d.integer(key);
-        });
+        const long value =
+            read(path, [](const Dictionary& d, const std::string& key) { return d.integer(key); });
         checkRange(path, static_cast<double>(value));
         return value;
     }
 
     bool boolean(const std::string& path) const {
-        return read(path, [](const Dictionary& d, const std::string& key) {
-            return d.boolean(key);
-        });
+        return read(path,
+                    [](const Dictionary& d, const std::string& key) { return d.boolean(key); });
     }
 
     Vec3 vector(const std::string& path) const {
-        return read(path, [](const Dictionary& d, const std::string& key) {
-            return Vec3(d.vector(key));
-        });
+        return read(
+            path, [](const Dictionary& d, const std::string& key) { return Vec3(d.vector(key)); });
     }
 
     /// A vector normalised to unit length; a zero vector is an error.
@@ -65,11 +61,10 @@ public:
     }
 
     std::array<int, 3> integerTriple(const std::string& path) const {
-        const auto values = read(path, [](const Dictionary& d, const std::string& key) {
-            return d.scalarList(key);
-        });
-        if (values.size() != 3) fail(path, "expected 3 integers, found " +
-                                               std::to_string(values.size()) + " values");
+        const auto values = read(
+            path, [](const Dictionary& d, const std::string& key) { return d.scalarList(key); });
+        if (values.size() != 3)
+            fail(path, "expected 3 integers, found " + std::to_string(values.size()) + " values");
         std::array<int, 3> triple{};
         for (int axis = 0; axis < 3; ++axis) {
             if (values[axis] != std::round(values[axis]) || values[axis] > 1e6)
@@ -82,18 +77,16 @@ public:
 
     /// The word at path, which must be one of the declared allowed names.
     std::string word(const std::string& path) const {
-        const std::string value = read(path, [](const Dictionary& d, const std::string& key) {
-            return d.word(key);
-        });
+        const std::string value =
+            read(path, [](const Dictionary& d, const std::string& key) { return d.word(key); });
         checkAllowed(path, value);
         return value;
     }
 
     /// A list of words, each one of the declared allowed names, none twice.
     std::vector<std::string> wordList(const std::string& path) const {
-        const auto values = read(path, [](const Dictionary& d, const std::string& key) {
-            return d.wordList(key);
-        });
+        const auto values =
+            read(path, [](const Dictionary& d, const std::string& key) { return d.wordList(key); });
         for (auto value = values.begin(); value != values.end(); ++value) {
             checkAllowed(path, *value);
             if (std::find(values.begin(), value, *value) != value)
@@ -124,8 +117,9 @@ public:
             const std::string path = dictionary.keyPath(key);
             const KeyDeclaration* declared = findSceneKey(path);
             if (!declared && top_.isReferenced(path)) continue; // a variable of the file
-            if (!declared) dictionary.fail(key, "unknown key; valid keys here are:" +
-                                                    validKeysIn(dictionary.path()));
+            if (!declared)
+                dictionary.fail(key, "unknown key; valid keys here are:" +
+                                         validKeysIn(dictionary.path()));
             const bool wantsDictionary = declared->kind == KeyKind::dictionary;
             if (wantsDictionary && !dictionary.isDict(key))
                 dictionary.fail(key, "expected a dictionary { ... }");
@@ -143,8 +137,7 @@ private:
         std::string leaf;
         if (const Dictionary* parent = parentOf(path, leaf); parent && parent->has(leaf))
             return reader(*parent, leaf);
-        if (key.required())
-            fail(path, "missing required key (" + key.unit + "): " + key.doc);
+        if (key.required()) fail(path, "missing required key (" + key.unit + "): " + key.doc);
         if (key.optional())
             throw std::logic_error("optional key read without a presence check: " + path);
         const Dictionary fallback =
@@ -278,8 +271,8 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
             keys.fail(coeffs + (carrier.C1 ? ".C1" : ".C3"), "give C1 and C3 together");
         if (carrier.C2 && !carrier.C1)
             keys.fail(coeffs + ".C2", "C2 follows from C1 and C3; give those too");
-        if (carrier.C2 && std::abs(*carrier.C2 - *carrier.C1 / (3 * *carrier.C3)) >
-                              1e-9 * std::abs(*carrier.C2))
+        if (carrier.C2 &&
+            std::abs(*carrier.C2 - *carrier.C1 / (3 * *carrier.C3)) > 1e-9 * std::abs(*carrier.C2))
             keys.fail(coeffs + ".C2", "continuity of Eq. 5.10/5.11 requires C2 = C1/(3 C3) = " +
                                           std::to_string(*carrier.C1 / (3 * *carrier.C3)));
     }

@@ -9,8 +9,8 @@ RandomStream::RandomStream(std::uint64_t seed, std::uint64_t particleId, RandomP
                            std::uint32_t eventCounter) {
     key_ = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
     counter_ = {{static_cast<std::uint32_t>(particleId),
-                 static_cast<std::uint32_t>(particleId >> 32),
-                 eventCounter, static_cast<std::uint32_t>(purpose) << 24}};
+                 static_cast<std::uint32_t>(particleId >> 32), eventCounter,
+                 static_cast<std::uint32_t>(purpose) << 24}};
 }
 
 double RandomStream::uniform() {

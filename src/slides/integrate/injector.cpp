@@ -14,10 +14,9 @@ double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, Pa
     // The reader guarantees the mean lies inside [minimum, maximum], so redraws terminate.
     while (true) {
         const double deviate = random.normal();
-        const double radius =
-            distribution.kind == RadiusDistributionKind::normal
-                ? distribution.mean + distribution.standardDeviation * deviate
-                : distribution.median * std::exp(sigma * deviate);
+        const double radius = distribution.kind == RadiusDistributionKind::normal
+                                  ? distribution.mean + distribution.standardDeviation * deviate
+                                  : distribution.median * std::exp(sigma * deviate);
         if (radius > distribution.minimum && radius < distribution.maximum && radius > 0)
             return radius;
     }
@@ -54,7 +53,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         positions_[k] = nozzle.centre + nozzle.radius * radialFraction *
                                             (std::cos(angle) * across + std::sin(angle) * other);
         crossSpanVelocities_[k] = scene_.injection.crossSpanSpeed *
-                               (std::cos(direction) * across + std::sin(direction) * other);
+                                  (std::cos(direction) * across + std::sin(direction) * other);
     }
     carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     for (std::size_t k = 0; k < count; ++k) {

@@ -7,7 +7,8 @@
 // u + τa instead of oscillating. explicitEuler is kept for comparison; it is unstable for
 // dt > 2τ.
 //
-//     time { integrator exponentialMidpoint; }  // explicitEuler | exponentialEuler | exponentialMidpoint
+//     time { integrator exponentialMidpoint; }  // explicitEuler | exponentialEuler |
+//     exponentialMidpoint
 //
 // How to add one: an enumerator, its name and order in integratorNames(), and its branch in
 // the stepper (integrate/stepper.cpp); tests/verification/test_integrators.cpp measures its order.

@@ -10,9 +10,9 @@
 namespace slides {
 
 Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
-    : scene_(scene), carrier_(carrier),
-      drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,
-            scene.particles.density},
+    : scene_(scene),
+      carrier_(carrier), drag_{scene.physics.drag, scene.fluid.density,
+                               scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
       injector_(scene) {
@@ -93,9 +93,9 @@ void Stepper::meetSurfaces(double h) {
         const Vec3& v = cloud_.velocity[i];
         if (!x.allFinite() || !v.allFinite()) {
             std::ostringstream message;
-            message << "particle " << cloud_.id[i] << " reached a non-finite state at t = "
-                    << time_ + h << " s (position " << x.transpose() << ", velocity "
-                    << v.transpose() << ")";
+            message << "particle " << cloud_.id[i]
+                    << " reached a non-finite state at t = " << time_ + h << " s (position "
+                    << x.transpose() << ", velocity " << v.transpose() << ")";
             throw std::runtime_error(message.str());
         }
         int touched = -1;

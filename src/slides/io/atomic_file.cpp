@@ -21,8 +21,7 @@ namespace {
 void openAndClose(const std::filesystem::path& target, const std::filesystem::path& file, int flags,
                   bool sync) {
     const int descriptor = ::open(file.c_str(), flags | O_CLOEXEC, 0666);
-    if (descriptor < 0)
-        fail(target, std::strerror(errno));
+    if (descriptor < 0) fail(target, std::strerror(errno));
     const bool synced = !sync || ::fsync(descriptor) == 0;
     const int syncErrno = errno;
     if (::close(descriptor) != 0 || !synced)
@@ -44,8 +43,7 @@ void writeFileAtomically(const std::filesystem::path& target,
         openAndClose(target, temporary, O_RDONLY, true);
         std::error_code error;
         std::filesystem::rename(temporary, target, error);
-        if (error)
-            fail(target, error.message());
+        if (error) fail(target, error.message());
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
@@ -56,8 +54,7 @@ void writeFileAtomically(const std::filesystem::path& target,
 void writeTextAtomically(const std::filesystem::path& target, std::string_view text) {
     writeFileAtomically(target, [&](const std::filesystem::path& temporary) {
         std::FILE* file = std::fopen(temporary.c_str(), "wb");
-        if (!file)
-            fail(target, std::strerror(errno));
+        if (!file) fail(target, std::strerror(errno));
         const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
         const int writeErrno = errno;
         if (std::fclose(file) != 0 || !written)

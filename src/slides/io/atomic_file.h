@@ -12,7 +12,7 @@ namespace slides {
 
 /// A file could not be written; the message names the file and the reason.
 class OutputError : public std::runtime_error {
-  public:
+public:
     using std::runtime_error::runtime_error;
 };
 

@@ -25,7 +25,7 @@ constexpr std::array<ParticleFieldName, 5> particleFieldNames() {
 
 /// A subset of the particle fields.
 class ParticleFieldSet {
-  public:
+public:
     static ParticleFieldSet all() {
         ParticleFieldSet every;
         every.bits_.set();
@@ -37,7 +37,7 @@ class ParticleFieldSet {
     }
     bool contains(ParticleField field) const { return bits_.test(static_cast<std::size_t>(field)); }
 
-  private:
+private:
     std::bitset<particleFieldNames().size()> bits_;
 };
 

@@ -13,7 +13,7 @@
 namespace slides {
 
 class PvdSeries {
-  public:
+public:
     /// file: the .pvd to (re)write; frame files are given relative to its directory.
     explicit PvdSeries(std::filesystem::path file);
 
@@ -23,7 +23,7 @@ class PvdSeries {
 
     const std::filesystem::path& file() const { return file_; }
 
-  private:
+private:
     std::filesystem::path file_;
     std::string dataSets_; ///< the <DataSet/> lines written so far
 };

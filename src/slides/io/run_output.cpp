@@ -52,8 +52,8 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     }
     char name[32];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
-    writeParticlesVtp(directory_ / name, ParticleFrame{ids_, positions_, velocities_, radii_,
-                                                       states_, fields_});
+    writeParticlesVtp(directory_ / name,
+                      ParticleFrame{ids_, positions_, velocities_, radii_, states_, fields_});
     series_.add(stepper.time(), name);
     ++frames_;
 }

@@ -140,12 +140,12 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
         {"note", "tau_St = 2 rho_p R^2 / (9 rho_f nu) at the mean radius"}};
     summary["time"] = {{"end", stepper.time()}, {"steps", stepper.steps()}};
     const double particleSteps = static_cast<double>(stepper.particleSteps());
-    summary["performance"] = {
-        {"wallSeconds", metrics.wallSeconds},
-        {"threads", metrics.threads},
-        {"particleSteps", stepper.particleSteps()},
-        {"particleStepsPerSecond",
-         metrics.wallSeconds > 0 ? particleSteps / metrics.wallSeconds : 0.0}};
+    summary["performance"] = {{"wallSeconds", metrics.wallSeconds},
+                              {"threads", metrics.threads},
+                              {"particleSteps", stepper.particleSteps()},
+                              {"particleStepsPerSecond", metrics.wallSeconds > 0
+                                                             ? particleSteps / metrics.wallSeconds
+                                                             : 0.0}};
     summary["settings"] = sceneSettings(scene);
     return summary;
 }

@@ -19,10 +19,10 @@ namespace slides {
 /// One frame, one entry per particle in every span (all of the same length).
 struct ParticleFrame {
     std::span<const std::uint64_t> id;
-    std::span<const Vec3> position;      ///< [m]
-    std::span<const Vec3> velocity;      ///< [m/s]
-    std::span<const double> radius;      ///< [m]
-    std::span<const std::int32_t> state; ///< ParticleState values
+    std::span<const Vec3> position;                    ///< [m]
+    std::span<const Vec3> velocity;                    ///< [m/s]
+    std::span<const double> radius;                    ///< [m]
+    std::span<const std::int32_t> state;               ///< ParticleState values
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
 };
 

@@ -38,8 +38,7 @@ inline double particleReynolds(double slipSpeed, double particleRadius, double k
 /// Cd·Re/24 for the given law; 1 for Stokes drag, → 1 as Re → 0 for every law.
 inline double dragCorrection(DragModel model, double reynolds) {
     switch (model) {
-    case DragModel::stokes:
-        return 1.0;
+    case DragModel::stokes: return 1.0;
     case DragModel::schillerNaumann:
         // Cd = 24/Re (1 + 0.15 Re^0.687) for Re < 1000, Cd = 0.44 above.
         return reynolds < 1000.0 ? 1.0 + 0.15 * std::pow(reynolds, 0.687) : 0.44 * reynolds / 24.0;

@@ -7,11 +7,11 @@ namespace slides {
 
 struct Arrival {
     ParticleId id = 0;
-    int surface = 0;           ///< index into Scene::surfaces
-    double time = 0;           ///< [s]
-    Vec3 position;             ///< centre at first touch [m]
-    Vec3 velocity;             ///< impact velocity [m/s]
-    double radius = 0;         ///< [m]
+    int surface = 0;   ///< index into Scene::surfaces
+    double time = 0;   ///< [s]
+    Vec3 position;     ///< centre at first touch [m]
+    Vec3 velocity;     ///< impact velocity [m/s]
+    double radius = 0; ///< [m]
 };
 
 } // namespace slides
