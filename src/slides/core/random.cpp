@@ -6,12 +6,11 @@
 namespace slides {
 
 RandomStream::RandomStream(std::uint64_t seed, std::uint64_t particleId, RandomPurpose purpose,
-                           std::uint32_t eventCounter) {
-    key_ = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
-    counter_ = {{static_cast<std::uint32_t>(particleId),
-                 static_cast<std::uint32_t>(particleId >> 32), eventCounter,
-                 static_cast<std::uint32_t>(purpose) << 24}};
-}
+                           std::uint32_t eventCounter)
+    : key_{{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}},
+      counter_{{static_cast<std::uint32_t>(particleId),
+                static_cast<std::uint32_t>(particleId >> 32), eventCounter,
+                static_cast<std::uint32_t>(purpose) << 24}} {}
 
 double RandomStream::uniform() {
     if (used_ == 4) {
