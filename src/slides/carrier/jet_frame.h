@@ -96,7 +96,10 @@ void JetFrame::sample(const Profile& profile, std::span<const Vec3> points, Carr
     out.resize(points.size(), needs);
     const Vec3& axis = nozzle_.axis;
     const bool planar = geometry_ == JetGeometry::planar;
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto count = static_cast<std::ptrdiff_t>(points.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t n = 0; n < count; ++n) {
+        const auto i = static_cast<std::size_t>(n);
         const Vec3 offset = points[i] - nozzle_.centre;
         const double axial = offset.dot(axis);
         if (axial < 0) { // behind the exit plane: at rest

@@ -54,6 +54,10 @@ void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
     }
 }
 
+// The schemes as function objects, so advanceEach inlines them into its loop.
+constexpr auto exactRelaxation = [](auto&&... step) { relaxExactly(step...); };
+constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); };
+
 } // namespace
 
 void Stepper::advance(double h) {
@@ -66,10 +70,10 @@ void Stepper::advance(double h) {
 
     switch (scene_.time.integrator) {
     case Integrator::explicitEuler:
-        advanceEach(advanceExplicitly, x, v, u, v, radius, drag_, a, h);
+        advanceEach(explicitStep, x, v, u, v, radius, drag_, a, h);
         break;
     case Integrator::exponentialEuler:
-        advanceEach(relaxExactly, x, v, u, v, radius, drag_, a, h);
+        advanceEach(exactRelaxation, x, v, u, v, radius, drag_, a, h);
         break;
     case Integrator::exponentialMidpoint: {
         // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
@@ -78,9 +82,9 @@ void Stepper::advance(double h) {
         auto& vm = midpointVelocities_;
         xm = x;
         vm = v;
-        advanceEach(relaxExactly, xm, vm, u, v, radius, drag_, a, 0.5 * h);
+        advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, 0.5 * h);
         carrier_.sample(xm, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
-        advanceEach(relaxExactly, x, v, midpointGas_.velocity, vm, radius, drag_, a, h);
+        advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a, h);
         break;
     }
     }
