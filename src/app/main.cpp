@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     app.add_option("--end-time", options.endTime, "end time [s], overrides time.endTime");
     app.add_option("--dt", options.dt, "time step [s], overrides time.dt");
     app.add_option("--threads", options.threads, "threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(1, 4096).description("a whole number from 1 to 4096"));
     app.add_flag("--quiet", options.quiet, "no progress display or report");
     app.add_flag("--list-keys", options.listKeys,
                  "print the table of slidesProperties keys (markdown) and exit");
