@@ -177,6 +177,21 @@ TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
     EXPECT_EQ(arrived + escaped + active, injected);
     EXPECT_EQ(active, 0) << "stopWhenAllDone: the run ends when every particle is done";
     EXPECT_GT(arrived, 7900) << "heavy particles fly nearly straight onto the target";
+    // No gas is faster than U0 = 25 m/s (the jet's centreline maximum) and the particles start
+    // at the gas velocity, so none can touch the plate (standoff 0.06 m, radius 80 µm) before
+    // (0.06 − 80e-6)/25 s, nor arrive faster than U0 plus the cross-span and gravity parts;
+    // with τ_St = 0.29 s ≫ the flight time, they keep most of their speed.
+    const auto& arrivals = summary["arrivals"]["target"];
+    EXPECT_EQ(arrivals["count"].get<long>(), arrived);
+    EXPECT_GE(arrivals["arrivalTime"]["min"].get<double>(), (0.06 - 80e-6) / 25);
+    const double flight = arrivals["arrivalTime"]["max"]; // gravity acts ⟂ axis meanwhile
+    EXPECT_LE(arrivals["impactSpeed"]["max"].get<double>(), std::hypot(25.0, 0.5 + 9.81 * flight));
+    EXPECT_GT(arrivals["impactNormalSpeed"]["mean"].get<double>(), 0.5 * 25);
+    const double mean = arrivals["impactSpeed"]["mean"];
+    const double deviation = arrivals["impactSpeed"]["standardDeviation"];
+    const double rms = arrivals["impactSpeed"]["rms"];
+    EXPECT_NEAR(rms * rms, mean * mean + deviation * deviation, 1e-12 * rms * rms);
+    EXPECT_GT(deviation, 0.0) << "particles across the nozzle start at different gas speeds";
     EXPECT_GT(summary["performance"]["particleStepsPerSecond"].get<double>(), 0);
     for (const auto& entry : std::filesystem::directory_iterator(output))
         EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos)

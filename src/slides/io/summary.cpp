@@ -21,18 +21,26 @@ nlohmann::json material(const MaterialSettings& m) {
             {"surfaceEnergy", m.surfaceEnergy}};
 }
 
-/// Mean, rms and extremes of one quantity over the arrivals at one surface.
+/// Mean, standard deviation, rms and extremes of one quantity over the arrivals at one
+/// surface (two passes, so the deviation does not cancel catastrophically).
 nlohmann::json statistics(const std::vector<double>& values) {
     if (values.empty()) return nullptr;
-    double sum = 0, squares = 0, low = values.front(), high = values.front();
+    const double n = static_cast<double>(values.size());
+    double sum = 0, low = values.front(), high = values.front();
     for (double value : values) {
         sum += value;
-        squares += value * value;
         low = std::min(low, value);
         high = std::max(high, value);
     }
-    const double n = static_cast<double>(values.size());
-    return {{"mean", sum / n}, {"rms", std::sqrt(squares / n)}, {"min", low}, {"max", high}};
+    const double mean = sum / n;
+    double deviations = 0;
+    for (double value : values) deviations += (value - mean) * (value - mean);
+    const double variance = deviations / n;
+    return {{"mean", mean},
+            {"standardDeviation", std::sqrt(variance)},
+            {"rms", std::sqrt(variance + mean * mean)},
+            {"min", low},
+            {"max", high}};
 }
 
 nlohmann::json arrivalsAt(const Scene& scene, const Stepper& stepper, int surface) {
