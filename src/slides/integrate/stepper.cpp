@@ -3,6 +3,7 @@
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -27,7 +28,12 @@ bool Stepper::finished() const {
 
 void Stepper::step() {
     const double h = std::min(scene_.time.dt, scene_.time.endTime - time_);
+    const std::size_t alreadyInFlight = cloud_.size();
     injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
+    // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
+    stepLengths_.assign(cloud_.size(), h);
+    for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
+        stepLengths_[i] = std::clamp(time_ + h - injector_.injectionTime(cloud_.id[i]), 0.0, h);
     particleSteps_ += cloud_.size();
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
@@ -39,18 +45,19 @@ void Stepper::step() {
 
 namespace {
 
-/// One step of `scheme` (relaxExactly or advanceExplicitly) over h for every particle with gas
-/// velocity u, the response time τ from the slip u − w (w = v, or the midpoint velocity).
+/// One step of `scheme` (relaxExactly or advanceExplicitly) over fraction × h_i for every
+/// particle i with gas velocity u, the response time τ from the slip u − w (w = v, or the
+/// midpoint velocity).
 template <typename Scheme>
 void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
                  const std::vector<Vec3>& u, const std::vector<Vec3>& w,
                  const std::vector<double>& radius, const DragParameters& drag, const Vec3& a,
-                 double h) {
+                 const std::vector<double>& h, double fraction) {
     const auto count = static_cast<std::ptrdiff_t>(x.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         const double tau = dragResponseTime(drag, radius[i], (u[i] - w[i]).norm());
-        scheme(x[i], v[i], u[i], tau, a, h);
+        scheme(x[i], v[i], u[i], tau, a, fraction * h[i]);
     }
 }
 
@@ -70,10 +77,10 @@ void Stepper::advance(double h) {
 
     switch (scene_.time.integrator) {
     case Integrator::explicitEuler:
-        advanceEach(explicitStep, x, v, u, v, radius, drag_, a, h);
+        advanceEach(explicitStep, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
         break;
     case Integrator::exponentialEuler:
-        advanceEach(exactRelaxation, x, v, u, v, radius, drag_, a, h);
+        advanceEach(exactRelaxation, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
         break;
     case Integrator::exponentialMidpoint: {
         // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
@@ -82,9 +89,10 @@ void Stepper::advance(double h) {
         auto& vm = midpointVelocities_;
         xm = x;
         vm = v;
-        advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, 0.5 * h);
+        advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
         carrier_.sample(xm, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
-        advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a, h);
+        advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
+                    stepLengths_, 1.0);
         break;
     }
     }
@@ -115,19 +123,15 @@ void Stepper::meetSurfaces(double h) {
         if (touched >= 0) {
             const Vec3& x0 = startPositions_[i];
             const Vec3& v0 = startVelocities_[i];
-            arrivals_.push_back({cloud_.id[i], touched, time_ + firstTouch * h,
-                                 x0 + firstTouch * (x - x0), v0 + firstTouch * (v - v0),
-                                 cloud_.radius[i]});
+            const double arrivalTime = time_ + h - (1 - firstTouch) * stepLengths_[i];
+            arrivals_.push_back({cloud_.id[i], touched, arrivalTime, x0 + firstTouch * (x - x0),
+                                 v0 + firstTouch * (v - v0), cloud_.radius[i]});
         } else if (insideBox(scene_.domain, x)) {
             continue;
         } else {
             ++escaped_;
         }
-        cloud_.removeAt(i);
-        startPositions_[i] = startPositions_.back();
-        startPositions_.pop_back();
-        startVelocities_[i] = startVelocities_.back();
-        startVelocities_.pop_back();
+        cloud_.removeAt(i); // swaps in the last particle, already handled
     }
 }
 

@@ -1,7 +1,10 @@
 // Stepper: the loop of one run — inject, sample the carrier, integrate, meet surfaces.
 //
 // Per step of length h (the last one shortened to end exactly at time.endTime):
-//   1. particles due before t + h enter at t (integrate/injector.h);
+//   1. particles due before t + h enter (integrate/injector.h); one due at t_k inside the step
+//      is advanced only over its remainder t + h − t_k, as a parcel's step fraction in OpenFOAM
+//      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
+//      steady carriers);
 //   2. the carrier is sampled once for the whole cloud;
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
@@ -61,6 +64,7 @@ private:
     // Scratch, reused every step.
     CarrierSample gas_;
     CarrierSample midpointGas_;
+    std::vector<double> stepLengths_; ///< h, or the remainder of the step for new particles
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
     std::vector<Vec3> midpointPositions_;
