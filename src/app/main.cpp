@@ -86,11 +86,15 @@ int run(const Options& options) {
     slides::Stepper stepper(scene, *carrier);
     slides::ProgressDisplay progress(stderr, options.quiet);
 
-    const auto start = std::chrono::steady_clock::now();
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    Clock::duration stepping{};
     output.writeFrame(stepper);
     double nextFrame = scene.output.interval;
     while (!stepper.finished()) {
+        const auto stepStart = Clock::now();
         stepper.step();
+        stepping += Clock::now() - stepStart;
         if (stepper.time() >= nextFrame * (1 - 1e-12) || stepper.finished()) {
             output.writeFrame(stepper);
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
@@ -102,15 +106,16 @@ int run(const Options& options) {
         progress.update(fraction, stepper.time(), stepper.cloud().size());
     }
     progress.finish();
-    const double wallSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const auto summary =
-        slides::runSummary(scene, stepper, {wallSeconds, threads, carrier->describe()});
+    const double wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double steppingSeconds = std::chrono::duration<double>(stepping).count();
+    const auto summary = slides::runSummary(
+        scene, stepper, {wallSeconds, steppingSeconds, threads, carrier->describe()});
     output.writeSummary(summary);
 
     if (!options.quiet) {
-        std::printf("done: t = %.4g s in %ld steps, %.3g s wall, %.3g particle-steps/s\n",
-                    stepper.time(), stepper.steps(), wallSeconds,
+        std::printf("done: t = %.4g s in %ld steps, %.3g s wall (%.3g s stepping, %.3g "
+                    "particle-steps/s)\n",
+                    stepper.time(), stepper.steps(), wallSeconds, steppingSeconds,
                     summary["performance"]["particleStepsPerSecond"].get<double>());
         std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
                     stepper.injected(), stepper.arrivals().size(), stepper.escaped(),

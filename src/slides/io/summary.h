@@ -12,7 +12,8 @@
 namespace slides {
 
 struct RunMetrics {
-    double wallSeconds = 0;
+    double wallSeconds = 0;     ///< the whole run, output included
+    double steppingSeconds = 0; ///< inside Stepper::step() only
     int threads = 1;
     std::string carrier; ///< CarrierField::describe()
 };
