@@ -7,6 +7,7 @@
 #include "slides/config/scene_keys.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
+#include "slides/core/name_table.h"
 #include "slides/integrate/stepper.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/progress.h"
@@ -58,9 +59,7 @@ void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier
     std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "
                 "time %.3g s\n",
                 scene.particles.count, meanRadius, scene.particles.density, responseTime);
-    std::string integrator;
-    for (const auto& entry : slides::integratorNames())
-        if (entry.integrator == scene.time.integrator) integrator = entry.name;
+    const std::string integrator(slides::nameOf(slides::integratorNames(), scene.time.integrator));
     std::printf("  time       dt %.3g s (%.3g response times), end %.3g s, %s, %d thread%s\n",
                 scene.time.dt, scene.time.dt / responseTime, scene.time.endTime, integrator.c_str(),
                 threads, threads == 1 ? "" : "s");

@@ -48,14 +48,14 @@ class DragFamily : public testing::TestWithParam<DragModelName> {};
 TEST_P(DragFamily, ReducesToStokesAtLowReynolds) {
     // Cd·Re/24 → 1 as Re → 0; the leading correction is below 0.2 % at Re = 1e-3 for every law
     // here (largest: Haider–Levenspiel, 0.1806·Re^0.6459 = 0.21 %).
-    EXPECT_NEAR(dragCorrection(GetParam().model, 1e-8), 1.0, 1e-5);
-    EXPECT_NEAR(dragCorrection(GetParam().model, 1e-3), 1.0, 2.2e-3);
+    EXPECT_NEAR(dragCorrection(GetParam().value, 1e-8), 1.0, 1e-5);
+    EXPECT_NEAR(dragCorrection(GetParam().value, 1e-3), 1.0, 2.2e-3);
 }
 
 TEST_P(DragFamily, PositiveAndIncreasingWithReynolds) {
     double previous = 0;
     for (double reynolds = 1e-6; reynolds < 1e6; reynolds *= 1.05) {
-        const double correction = dragCorrection(GetParam().model, reynolds);
+        const double correction = dragCorrection(GetParam().value, reynolds);
         ASSERT_GT(correction, 0) << "Re = " << reynolds;
         ASSERT_GE(correction, previous * (1 - 5e-3)) << "Re = " << reynolds;
         previous = correction;
@@ -66,8 +66,8 @@ TEST_P(DragFamily, ContinuousEverywhere) {
     // Across Schiller–Naumann's switch at Re = 1000 the published constants differ by 0.44 %
     // (1 + 0.15·1000^0.687 = 18.25 against 0.44·1000/24 = 18.33); nothing else may jump.
     for (double reynolds = 1e-3; reynolds < 1e5; reynolds *= 1.01) {
-        const double below = dragCorrection(GetParam().model, reynolds * (1 - 1e-9));
-        const double above = dragCorrection(GetParam().model, reynolds * (1 + 1e-9));
+        const double below = dragCorrection(GetParam().value, reynolds * (1 - 1e-9));
+        const double above = dragCorrection(GetParam().value, reynolds * (1 + 1e-9));
         ASSERT_NEAR(above / below, 1.0, 5e-3) << "Re = " << reynolds;
     }
 }

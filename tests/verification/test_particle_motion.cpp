@@ -33,7 +33,7 @@ TEST_P(EveryIntegrator, SettlesAtTheRootOfTheForceBalance) {
     // (Eq. 3.16 with Eq. 3.17). Root by bisection, independent of the integrators.
     Scene scene = singleParticleScene();
     scene.physics.gravity = Vec3(0, 0, -9.81);
-    scene.time.integrator = GetParam().integrator;
+    scene.time.integrator = GetParam().value;
     const DragParameters drag{scene.physics.drag, scene.fluid.density,
                               scene.fluid.kinematicViscosity, scene.particles.density};
     const double radius = scene.particles.radius.value;
@@ -63,7 +63,7 @@ TEST_P(EveryIntegrator, RelaxesFromRestLikeTheStokesSolution) {
     Scene scene = singleParticleScene();
     scene.physics.drag = DragModel::stokes;
     scene.physics.gravity = Vec3(3.0, -9.81, 0.5);
-    scene.time.integrator = GetParam().integrator;
+    scene.time.integrator = GetParam().value;
     const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
                                           scene.fluid.density, scene.fluid.kinematicViscosity);
     scene.time.dt = 0.05 * tau;
@@ -75,7 +75,7 @@ TEST_P(EveryIntegrator, RelaxesFromRestLikeTheStokesSolution) {
     const Vec3 exactV = terminal * (1 - std::exp(-t / tau));
     const Vec3 exactX = terminal * (t - tau * (1 - std::exp(-t / tau)));
     const double tolerance =
-        GetParam().integrator == Integrator::explicitEuler ? 2e-2 : 1e-12; // Euler: O(dt/τ)
+        GetParam().value == Integrator::explicitEuler ? 2e-2 : 1e-12; // Euler: O(dt/τ)
     EXPECT_LT((v - exactV).norm() / terminal.norm(), tolerance);
     EXPECT_LT((x - exactX).norm() / exactX.norm(), tolerance);
 }
@@ -85,7 +85,7 @@ TEST_P(EveryIntegrator, ObservedOrderMatchesDesignOrder) {
     // error against a reference run at dt/256 must fall as dt^p under halving, p the design
     // order. Tolerance ±0.2 on p covers the pre-asymptotic drift between dt and dt/8.
     Scene scene = singleParticleScene();
-    scene.time.integrator = GetParam().integrator;
+    scene.time.integrator = GetParam().value;
     scene.injection.crossSpanSpeed = 0;
     scene.nozzle.centre = Vec3(0.02, 0.01, 0);
     const test::SwirlingStagnationFlow flow(5.0, 8.0, Vec3(0.5, 0, 0)); // rotates, bounded

@@ -160,7 +160,7 @@ TEST_P(InjectionTiming, ParticlesDueInsideAStepFlyOnlyItsRemainder) {
     // radius R) at t_k + (L − R)/|U|: exact for every integrator, whatever dt, if a particle due
     // inside a step flies only the rest of that step. dt = 3.7 ms is not a multiple of 1/rate.
     Scene scene = test::singleParticleScene();
-    scene.time.integrator = GetParam().integrator;
+    scene.time.integrator = GetParam().value;
     scene.particles.count = 40;
     scene.injection.mode = InjectionMode::rate;
     scene.injection.rate = 1000;

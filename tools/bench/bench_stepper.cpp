@@ -17,7 +17,7 @@ void stepperThroughput(benchmark::State& state) {
     scene.particles.count = state.range(0);
     scene.injection.mode = slides::InjectionMode::allAtStart;
     const auto integrator = slides::integratorNames()[static_cast<std::size_t>(state.range(1))];
-    scene.time.integrator = integrator.integrator;
+    scene.time.integrator = integrator.value;
     scene.time.endTime = 1e9;
     scene.time.stopWhenAllDone = false;
     scene.surfaces.clear(); // keep every particle in flight while timing

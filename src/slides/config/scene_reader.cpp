@@ -3,6 +3,7 @@
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
+#include "slides/core/name_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -331,9 +332,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.injection.crossSpanSpeed = keys.scalar("injection.crossSpanSpeed");
     scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
 
-    const std::string drag = keys.word("physics.drag");
-    for (const auto& entry : dragModelNames())
-        if (entry.name == drag) scene.physics.drag = entry.model;
+    scene.physics.drag = *valueNamed(dragModelNames(), keys.word("physics.drag"));
     scene.physics.gravity = keys.vector("physics.gravity");
     scene.physics.buoyancy = keys.boolean("physics.buoyancy");
 
@@ -341,9 +340,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.time.endTime = keys.scalar("time.endTime");
     if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
     scene.time.stopWhenAllDone = keys.boolean("time.stopWhenAllDone");
-    const std::string integrator = keys.word("time.integrator");
-    for (const auto& entry : integratorNames())
-        if (entry.name == integrator) scene.time.integrator = entry.integrator;
+    scene.time.integrator = *valueNamed(integratorNames(), keys.word("time.integrator"));
 
     const Dictionary& surfaces = dictionary.subDict("surfaces");
     for (const auto& name : surfaces.keys()) {
@@ -370,8 +367,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.output.carrierResolution = keys.integerTriple("output.carrierResolution");
     scene.output.fields = ParticleFieldSet();
     for (const auto& name : keys.wordList("output.fields"))
-        for (const auto& field : particleFieldNames())
-            if (field.name == name) scene.output.fields.add(field.field);
+        scene.output.fields.add(*valueNamed(particleFieldNames(), name));
     return scene;
 }
 

@@ -25,7 +25,7 @@ namespace slides {
 enum class Integrator { explicitEuler, exponentialEuler, exponentialMidpoint };
 
 struct IntegratorName {
-    Integrator integrator;
+    Integrator value;
     std::string_view name;
     int order; ///< design order of accuracy for smooth u(x) and τ(v)
 };

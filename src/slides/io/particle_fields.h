@@ -11,7 +11,7 @@ namespace slides {
 enum class ParticleField { id, diameter, velocity, speed, state };
 
 struct ParticleFieldName {
-    ParticleField field;
+    ParticleField value;
     std::string_view name;
 };
 

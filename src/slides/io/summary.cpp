@@ -1,5 +1,7 @@
 #include "slides/io/summary.h"
 
+#include "slides/core/name_table.h"
+
 #include <cmath>
 
 namespace slides {
@@ -7,12 +9,6 @@ namespace slides {
 namespace {
 
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-template <typename Table, typename Value> std::string nameIn(const Table& table, Value value) {
-    for (const auto& entry : table)
-        if (entry.model == value) return std::string(entry.name);
-    return "?";
-}
 
 nlohmann::json material(const MaterialSettings& m) {
     return {{"bulkModulus", m.bulkModulus},
@@ -97,16 +93,13 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"rate", scene.injection.rate},
         {"crossSpanSpeed", scene.injection.crossSpanSpeed},
         {"seed", scene.injection.seed}};
-    settings["physics"] = {{"drag", nameIn(dragModelNames(), scene.physics.drag)},
+    settings["physics"] = {{"drag", nameOf(dragModelNames(), scene.physics.drag)},
                            {"gravity", vec(scene.physics.gravity)},
                            {"buoyancy", scene.physics.buoyancy}};
-    std::string integrator;
-    for (const auto& entry : integratorNames())
-        if (entry.integrator == scene.time.integrator) integrator = entry.name;
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},
-                        {"integrator", integrator}};
+                        {"integrator", nameOf(integratorNames(), scene.time.integrator)}};
     for (const auto& plane : scene.surfaces)
         settings["surfaces"][plane.name] = {{"type", "plane"},
                                             {"point", vec(plane.point)},
@@ -115,7 +108,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
     settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
     std::vector<std::string_view> fields;
     for (const auto& field : particleFieldNames())
-        if (scene.output.fields.contains(field.field)) fields.push_back(field.name);
+        if (scene.output.fields.contains(field.value)) fields.push_back(field.name);
     settings["output"] = {{"interval", scene.output.interval},
                           {"carrierResolution", scene.output.carrierResolution},
                           {"fields", fields}};

@@ -19,7 +19,7 @@ namespace slides {
 enum class DragModel { stokes, schillerNaumann, haiderLevenspiel };
 
 struct DragModelName {
-    DragModel model;
+    DragModel value;
     std::string_view name;
 };
 
