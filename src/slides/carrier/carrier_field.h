@@ -17,17 +17,25 @@ namespace slides {
 
 /// What a caller needs from a sample; a carrier fills only what is asked for.
 struct CarrierNeeds {
-    bool velocityGradient = false;
+    bool velocityGradient = false; ///< ∇U: fluid acceleration, lift
+    bool turbulence = false;       ///< k and ε: turbulent eddy sampling
+    bool temperature = false;      ///< T: convective heating
 };
 
 /// One batch of samples, one entry per point, in the order of the points (structure of arrays).
 struct CarrierSample {
     std::vector<Vec3> velocity;         ///< U [m/s]
     std::vector<Mat3> velocityGradient; ///< dU_i/dx_j [1/s], filled when needs.velocityGradient
+    std::vector<double> turbulentKineticEnergy; ///< k [m²/s²], filled when needs.turbulence
+    std::vector<double> dissipationRate;        ///< ε [m²/s³], filled when needs.turbulence
+    std::vector<double> temperature;            ///< T [K], filled when needs.temperature
 
     void resize(std::size_t count, CarrierNeeds needs) {
         velocity.resize(count);
         velocityGradient.resize(needs.velocityGradient ? count : 0);
+        turbulentKineticEnergy.resize(needs.turbulence ? count : 0);
+        dissipationRate.resize(needs.turbulence ? count : 0);
+        temperature.resize(needs.temperature ? count : 0);
     }
 };
 
