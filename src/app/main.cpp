@@ -109,7 +109,7 @@ int run(const Options& options) {
     const double steppingSeconds = std::chrono::duration<double>(stepping).count();
     const auto summary = slides::runSummary(
         scene, stepper, {wallSeconds, steppingSeconds, threads, carrier->describe()});
-    output.writeSummary(summary);
+    output.finish(stepper, summary);
 
     if (!options.quiet) {
         std::printf("done: t = %.4g s in %ld steps, %.3g s wall (%.3g s stepping, %.3g "

@@ -205,8 +205,8 @@ TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
         runCli(defaultCase.string() + " --quiet --output " + output.string(), scratch.path / "log"),
         0)
         << slurp(scratch.path / "log");
-    for (const char* file :
-         {"particles.pvd", "carrier.vti", "summary.json", "particles_000000.vtp"})
+    for (const char* file : {"particles.pvd", "carrier.vti", "summary.json", "particles_000000.vtp",
+                             "particles.h5", "particles.xmf"})
         EXPECT_TRUE(std::filesystem::exists(output / file)) << file;
     const auto summary = nlohmann::json::parse(slurp(output / "summary.json"));
     const long injected = summary["particles"]["injected"];

@@ -101,6 +101,7 @@ struct OutputSettings {
     double interval = 0;                               ///< [s] between particle frames
     std::array<int, 3> carrierResolution{};            ///< lattice points of carrier.vti per axis
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< point arrays of each frame
+    bool hdf5 = true; ///< also particles.h5 + particles.xmf (io/hdf5_particles.h)
 };
 
 struct Scene {

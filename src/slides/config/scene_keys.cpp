@@ -162,6 +162,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "Lattice points per axis of carrier.vti over the domain."},
         {"output.fields", K::wordList, "-", "(id diameter velocity speed state)",
          namesOf(particleFieldNames()), R::any, "Point arrays of each particle frame."},
+        {"output.hdf5", K::boolean, "-", "yes", {}, R::any,
+         "Also write every frame and the arrivals to particles.h5, indexed by particles.xmf."},
     };
     // clang-format on
     return keys;

@@ -368,6 +368,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.output.fields = ParticleFieldSet();
     for (const auto& name : keys.wordList("output.fields"))
         scene.output.fields.add(*valueNamed(particleFieldNames(), name));
+    scene.output.hdf5 = keys.boolean("output.hdf5");
     return scene;
 }
 

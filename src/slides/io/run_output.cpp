@@ -17,10 +17,11 @@ std::filesystem::path prepared(std::filesystem::path directory) {
     if (error)
         throw OutputError("cannot create output directory " + directory.string() + ": " +
                           error.message());
-    // Frames of an earlier run would otherwise mix with this one's in a file browser.
+    // Particle files of an earlier run would otherwise mix with this one's.
     for (const auto& entry : std::filesystem::directory_iterator(directory)) {
         const std::string name = entry.path().filename().string();
-        if (name.starts_with("particles_") && name.ends_with(".vtp"))
+        if ((name.starts_with("particles_") && name.ends_with(".vtp")) ||
+            name.starts_with(ParticlesHdf5::fileName) || name == ParticlesHdf5::indexName)
             std::filesystem::remove(entry.path());
     }
     return directory;
@@ -32,6 +33,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
                      const CarrierField& carrier)
     : directory_(prepared(std::move(directory))), series_(directory_ / "particles.pvd"),
       fields_(scene.output.fields) {
+    if (scene.output.hdf5)
+        hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
     writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
                     scene.output.carrierResolution, 0.0);
 }
@@ -52,13 +55,15 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     }
     char name[32];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
-    writeParticlesVtp(directory_ / name,
-                      ParticleFrame{ids_, positions_, velocities_, radii_, states_, fields_});
+    const ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
+    writeParticlesVtp(directory_ / name, frame);
+    if (hdf5_) hdf5_->writeFrame(stepper.time(), frame);
     series_.add(stepper.time(), name);
     ++frames_;
 }
 
-void RunOutput::writeSummary(const nlohmann::json& summary) {
+void RunOutput::finish(const Stepper& stepper, const nlohmann::json& summary) {
+    if (hdf5_) hdf5_->finish(stepper.arrivals());
     writeTextAtomically(directory_ / "summary.json", summary.dump(2) + "\n");
 }
 

@@ -4,6 +4,8 @@
 //   particles_NNNNNN.vtp   moving particles (state 0) and those that arrived (state 1)
 //   carrier.vti            the carrier sampled on a lattice over the domain, for context
 //   summary.json           counts, arrival statistics, speed and settings (io/summary.h)
+//   particles.h5, .xmf     every frame and the arrivals in HDF5 (io/hdf5_particles.h), when
+//                          output.hdf5 is on
 // Every file is written under a temporary name and renamed, and the .pvd is rewritten after
 // each frame, so a run stopped at any moment leaves a consistent, openable series.
 #pragma once
@@ -11,22 +13,25 @@
 #include "slides/carrier/carrier_field.h"
 #include "slides/config/scene.h"
 #include "slides/integrate/stepper.h"
+#include "slides/io/hdf5_particles.h"
 #include "slides/io/pvd_series.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace slides {
 
 class RunOutput {
 public:
-    /// Creates the directory, removes the frames of an earlier run there and writes
+    /// Creates the directory, removes the particle files of an earlier run there and writes
     /// carrier.vti.
     RunOutput(std::filesystem::path directory, const Scene& scene, const CarrierField& carrier);
 
     /// Writes the frame of the stepper's current state.
     void writeFrame(const Stepper& stepper);
-    void writeSummary(const nlohmann::json& summary);
+    /// Completes the HDF5 file with the arrivals and writes summary.json: the run is over.
+    void finish(const Stepper& stepper, const nlohmann::json& summary);
 
     const std::filesystem::path& directory() const { return directory_; }
     int frames() const { return frames_; }
@@ -34,6 +39,7 @@ public:
 private:
     std::filesystem::path directory_;
     PvdSeries series_;
+    std::optional<ParticlesHdf5> hdf5_;
     ParticleFieldSet fields_;
     int frames_ = 0;
     // Frame scratch: moving particles then arrivals.

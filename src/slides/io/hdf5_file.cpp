@@ -1,0 +1,152 @@
+#include "slides/io/hdf5_file.h"
+
+#include "slides/io/atomic_file.h"
+
+#include <algorithm>
+#include <array>
+
+namespace slides {
+
+namespace {
+
+/// Silences HDF5's automatic error-stack printing once: failures become OutputError here.
+void silenceHdf5Errors() {
+    static const bool silenced = [] {
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        return true;
+    }();
+    (void)silenced;
+}
+
+/// Rows per chunk: about 64 KiB of data, never more than the dataset.
+hsize_t chunkRows(std::size_t rows, std::size_t rowBytes) {
+    const std::size_t target = std::max<std::size_t>(1, 65536 / rowBytes);
+    return static_cast<hsize_t>(std::min(rows, target));
+}
+
+} // namespace
+
+Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& other) noexcept {
+    if (this != &other) {
+        close();
+        id_ = other.id_;
+        other.id_ = H5I_INVALID_HID;
+    }
+    return *this;
+}
+
+bool Hdf5Handle::close() {
+    if (id_ < 0) return true;
+    herr_t status = -1;
+    switch (H5Iget_type(id_)) {
+    case H5I_FILE: status = H5Fclose(id_); break;
+    case H5I_GROUP: status = H5Gclose(id_); break;
+    case H5I_DATASET: status = H5Dclose(id_); break;
+    case H5I_DATASPACE: status = H5Sclose(id_); break;
+    case H5I_DATATYPE: status = H5Tclose(id_); break;
+    case H5I_ATTR: status = H5Aclose(id_); break;
+    case H5I_GENPROP_LST: status = H5Pclose(id_); break;
+    default: break;
+    }
+    id_ = H5I_INVALID_HID;
+    return status >= 0;
+}
+
+Hdf5File::Hdf5File(std::filesystem::path path) : path_(std::move(path)) {
+    silenceHdf5Errors();
+    file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    if (!file_.valid()) fail("cannot create the file");
+}
+
+void Hdf5File::fail(const std::string& what) const {
+    throw OutputError("cannot write " + path_.string() + ": " + what);
+}
+
+Hdf5Handle Hdf5File::createGroup(const std::string& path) const {
+    Hdf5Handle group(H5Gcreate2(file_.get(), path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    if (!group.valid()) fail("cannot create group " + path);
+    return group;
+}
+
+void Hdf5File::writeRaw(hid_t parent, const std::string& name, hid_t type, const void* data,
+                        std::size_t rows, std::size_t columns, std::string_view units) const {
+    const std::array<hsize_t, 2> dims{static_cast<hsize_t>(rows), static_cast<hsize_t>(columns)};
+    const int rank = columns == 1 ? 1 : 2;
+    Hdf5Handle space(H5Screate_simple(rank, dims.data(), nullptr));
+    Hdf5Handle creation(H5Pcreate(H5P_DATASET_CREATE));
+    if (!space.valid() || !creation.valid()) fail("cannot describe dataset " + name);
+    // An empty dataset cannot be chunked (chunk extents must be ≥ 1 and ≤ the fixed size).
+    if (rows > 0) {
+        const std::array<hsize_t, 2> chunk{chunkRows(rows, columns * H5Tget_size(type)), dims[1]};
+        if (H5Pset_chunk(creation.get(), rank, chunk.data()) < 0 ||
+            H5Pset_shuffle(creation.get()) < 0 || H5Pset_deflate(creation.get(), 4) < 0)
+            fail("cannot set compression of dataset " + name);
+    }
+    Hdf5Handle dataset(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
+                                  creation.get(), H5P_DEFAULT));
+    if (!dataset.valid()) fail("cannot create dataset " + name);
+    if (rows > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+        fail("cannot write dataset " + name);
+    writeAttribute(dataset.get(), "units", units);
+}
+
+void Hdf5File::writeDataset(hid_t parent, const std::string& name, std::span<const double> values,
+                            std::size_t columns, std::string_view units) const {
+    writeRaw(parent, name, H5T_NATIVE_DOUBLE, values.data(), values.size() / columns, columns,
+             units);
+}
+
+void Hdf5File::writeDataset(hid_t parent, const std::string& name,
+                            std::span<const std::int32_t> values, std::string_view units) const {
+    writeRaw(parent, name, H5T_NATIVE_INT32, values.data(), values.size(), 1, units);
+}
+
+void Hdf5File::writeDataset(hid_t parent, const std::string& name,
+                            std::span<const std::uint64_t> values, std::string_view units) const {
+    writeRaw(parent, name, H5T_NATIVE_UINT64, values.data(), values.size(), 1, units);
+}
+
+void Hdf5File::writeAttribute(hid_t object, const std::string& name, std::string_view text) const {
+    Hdf5Handle type(H5Tcopy(H5T_C_S1));
+    Hdf5Handle space(H5Screate(H5S_SCALAR));
+    if (!type.valid() || !space.valid() ||
+        H5Tset_size(type.get(), std::max<std::size_t>(1, text.size())) < 0)
+        fail("cannot describe attribute " + name);
+    Hdf5Handle attribute(
+        H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
+    const std::string padded = text.empty() ? std::string(1, '\0') : std::string(text);
+    if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), padded.data()) < 0)
+        fail("cannot write attribute " + name);
+}
+
+namespace {
+
+template <typename Value>
+bool writeScalarAttribute(hid_t object, const std::string& name, hid_t type, Value value) {
+    Hdf5Handle space(H5Screate(H5S_SCALAR));
+    Hdf5Handle attribute(
+        H5Acreate2(object, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+    return attribute.valid() && H5Awrite(attribute.get(), type, &value) >= 0;
+}
+
+} // namespace
+
+void Hdf5File::writeAttribute(hid_t object, const std::string& name, double value) const {
+    if (!writeScalarAttribute(object, name, H5T_NATIVE_DOUBLE, value))
+        fail("cannot write attribute " + name);
+}
+
+void Hdf5File::writeAttribute(hid_t object, const std::string& name, std::int64_t value) const {
+    if (!writeScalarAttribute(object, name, H5T_NATIVE_INT64, value))
+        fail("cannot write attribute " + name);
+}
+
+void Hdf5File::flush() const {
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush to disk");
+}
+
+void Hdf5File::close() {
+    if (!file_.close()) fail("cannot close the file");
+}
+
+} // namespace slides

@@ -1,0 +1,99 @@
+#include "slides/io/hdf5_particles.h"
+
+#include "slides/io/atomic_file.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <system_error>
+
+namespace slides {
+
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 rows are written as three doubles");
+
+std::span<const double> flattened(std::span<const Vec3> vectors) {
+    return {reinterpret_cast<const double*>(vectors.data()), 3 * vectors.size()};
+}
+
+std::filesystem::path partialPath(const std::filesystem::path& directory) {
+    return directory / (std::string(ParticlesHdf5::fileName) + ".partial");
+}
+
+} // namespace
+
+ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::string& caseName)
+    : directory_(directory) {
+    file_.emplace(partialPath(directory));
+    file_->writeAttribute(file_->root(), "software", "SLIDES-track");
+    file_->writeAttribute(file_->root(), "version", SLIDES_VERSION);
+    file_->writeAttribute(file_->root(), "case", caseName);
+    file_->createGroup("/frames");
+}
+
+void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
+    const std::size_t count = frame.id.size();
+    if (frame.position.size() != count || frame.velocity.size() != count ||
+        frame.radius.size() != count || frame.state.size() != count)
+        throw std::invalid_argument("particle frame arrays differ in length");
+    char group[32];
+    std::snprintf(group, sizeof group, "/frames/%06zu", frames_.size());
+    const Hdf5File& file = *file_;
+    const Hdf5Handle frameGroup = file.createGroup(group);
+    const hid_t g = frameGroup.get();
+    file.writeAttribute(g, "time", time);
+    file.writeDataset(g, "position", flattened(frame.position), 3, "m");
+    const auto has = [&](ParticleField field) { return frame.fields.contains(field); };
+    if (has(ParticleField::id)) file.writeDataset(g, "id", frame.id, "1");
+    if (has(ParticleField::velocity))
+        file.writeDataset(g, "velocity", flattened(frame.velocity), 3, "m/s");
+    if (has(ParticleField::diameter)) {
+        scratch_.resize(count);
+        for (std::size_t i = 0; i < count; ++i) scratch_[i] = 2 * frame.radius[i];
+        file.writeDataset(g, "diameter", scratch_, 1, "m");
+    }
+    if (has(ParticleField::speed)) {
+        scratch_.resize(count);
+        for (std::size_t i = 0; i < count; ++i) scratch_[i] = frame.velocity[i].norm();
+        file.writeDataset(g, "speed", scratch_, 1, "m/s");
+    }
+    if (has(ParticleField::state)) file.writeDataset(g, "state", frame.state, "1");
+    file.flush();
+    frames_.push_back({group, time, count, frame.fields});
+}
+
+void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {
+    const Hdf5File& file = *file_;
+    const Hdf5Handle group = file.createGroup("/arrivals");
+    const std::size_t count = arrivals.size();
+    std::vector<std::uint64_t> ids(count);
+    std::vector<std::int32_t> surfaces(count);
+    std::vector<double> times(count), diameters(count);
+    std::vector<Vec3> positions(count), velocities(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        ids[i] = arrivals[i].id;
+        surfaces[i] = arrivals[i].surface;
+        times[i] = arrivals[i].time;
+        diameters[i] = 2 * arrivals[i].radius;
+        positions[i] = arrivals[i].position;
+        velocities[i] = arrivals[i].velocity;
+    }
+    file.writeDataset(group.get(), "id", ids, "1");
+    file.writeDataset(group.get(), "surface", surfaces, "1");
+    file.writeDataset(group.get(), "time", times, 1, "s");
+    file.writeDataset(group.get(), "position", flattened(positions), 3, "m");
+    file.writeDataset(group.get(), "velocity", flattened(velocities), 3, "m/s");
+    file.writeDataset(group.get(), "diameter", diameters, 1, "m");
+    file.writeAttribute(file.root(), "frames", static_cast<std::int64_t>(frames_.size()));
+    file_->close();
+    file_.reset();
+
+    std::error_code error;
+    std::filesystem::rename(partialPath(directory_), directory_ / fileName, error);
+    if (error)
+        throw OutputError("cannot rename " + partialPath(directory_).string() + " to " + fileName +
+                          ": " + error.message());
+    writeTextAtomically(directory_ / indexName, particlesXdmf(fileName, frames_));
+}
+
+} // namespace slides
