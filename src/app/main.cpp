@@ -2,6 +2,8 @@
 //
 //     slides-track foamCases/analyticSpray            # results in foamCases/analyticSpray/slides/
 //     slides-track CASE --output DIR --dt 1e-5 --threads 2
+//     slides-track CASE --checkpoint-every 500     # then, after a crash: slides-track CASE
+//     --restart
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_keys.h"
@@ -10,6 +12,7 @@
 #include "slides/core/name_table.h"
 #include "slides/integrate/stepper.h"
 #include "slides/io/atomic_file.h"
+#include "slides/io/checkpoint.h"
 #include "slides/io/progress.h"
 #include "slides/io/run_output.h"
 #include "slides/io/summary.h"
@@ -30,6 +33,8 @@ struct Options {
     std::optional<double> endTime;
     std::optional<double> dt;
     int threads = 0;
+    long checkpointEvery = 0; ///< steps between checkpoints; 0: none
+    bool restart = false;
     bool quiet = false;
     bool listKeys = false;
 };
@@ -81,15 +86,29 @@ int run(const Options& options) {
     const auto outputDirectory = options.output.empty()
                                      ? std::filesystem::path(options.caseDirectory) / "slides"
                                      : std::filesystem::path(options.output);
-    slides::RunOutput output(outputDirectory, scene, *carrier);
+    const slides::RunFingerprint fingerprint = slides::fingerprintOf(scene);
+    std::optional<slides::RunState> resumed;
+    if (options.restart)
+        resumed = slides::resumeFromCheckpoint(outputDirectory, scene, fingerprint);
+    slides::RunOutput output(outputDirectory, scene, *carrier,
+                             resumed ? &resumed->frames : nullptr);
     slides::Stepper stepper(scene, *carrier);
     slides::ProgressDisplay progress(stderr, options.quiet);
 
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     Clock::duration stepping{};
-    output.writeFrame(stepper);
     double nextFrame = scene.output.interval;
+    if (resumed) {
+        stepper.resume(resumed->counters, std::move(resumed->cloud), std::move(resumed->arrivals));
+        nextFrame = resumed->nextFrameTime;
+        if (!options.quiet)
+            std::printf("restarted from %s at t = %.6g s (step %ld)\n",
+                        (outputDirectory / slides::checkpointFileName).c_str(), stepper.time(),
+                        stepper.steps());
+    } else {
+        output.writeFrame(stepper);
+    }
     while (!stepper.finished()) {
         const auto stepStart = Clock::now();
         stepper.step();
@@ -98,6 +117,8 @@ int run(const Options& options) {
             output.writeFrame(stepper);
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
         }
+        if (options.checkpointEvery > 0 && stepper.steps() % options.checkpointEvery == 0)
+            slides::writeCheckpoint(output, stepper, nextFrame, fingerprint);
         const long done = stepper.injected() - static_cast<long>(stepper.cloud().size());
         double fraction = stepper.time() / scene.time.endTime;
         if (scene.time.stopWhenAllDone)
@@ -119,9 +140,9 @@ int run(const Options& options) {
         std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
                     stepper.injected(), stepper.arrivals().size(), stepper.escaped(),
                     stepper.cloud().size());
-        std::printf("results in %s/ (%d frames)\n  open in ParaView:  paraview %s\n"
+        std::printf("results in %s/ (%zu frames)\n  open in ParaView:  paraview %s\n"
                     "  summary:           %s\n",
-                    output.directory().c_str(), output.frames(),
+                    output.directory().c_str(), output.frames().size(),
                     (output.directory() / "particles.pvd").c_str(),
                     (output.directory() / "summary.json").c_str());
     }
@@ -140,6 +161,11 @@ int main(int argc, char** argv) {
     app.add_option("--dt", options.dt, "time step [s], overrides time.dt");
     app.add_option("--threads", options.threads, "threads (default: all cores)")
         ->check(CLI::Range(1, 4096).description("a whole number from 1 to 4096"));
+    app.add_option("--checkpoint-every", options.checkpointEvery,
+                   "write OUTPUT/checkpoint.h5 every N steps (whole state, atomically)")
+        ->check(CLI::Range(1L, 1000000000L).description("a whole number of steps ≥ 1"));
+    app.add_flag("--restart", options.restart,
+                 "continue from OUTPUT/checkpoint.h5; results identical to an uninterrupted run");
     app.add_flag("--quiet", options.quiet, "no progress display or report");
     app.add_flag("--list-keys", options.listKeys,
                  "print the table of slidesProperties keys (markdown) and exit");

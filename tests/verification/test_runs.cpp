@@ -2,6 +2,7 @@
 // Whole runs: reproducibility (same seed → identical particles; thread count changes nothing),
 // conservation of particle count, injection statistics, and the command line's behaviour on
 // the default case and on broken cases (exit status 2, one message naming file, line, key).
+#include "../support/case_runs.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_keys.h"
@@ -21,27 +22,11 @@
 namespace slides {
 namespace {
 
-const std::filesystem::path sourceDir = SLIDES_SOURCE_DIR;
-const std::filesystem::path defaultCase = sourceDir / "foamCases" / "analyticSpray";
-
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-/// A scratch directory, removed at the end of the test.
-struct ScratchDirectory {
-    std::filesystem::path path;
-    explicit ScratchDirectory(const std::string& name)
-        : path(std::filesystem::temp_directory_path() /
-               ("slides-" + name + "-" + std::to_string(::getpid()))) {
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path / "constant");
-    }
-    ~ScratchDirectory() { std::filesystem::remove_all(path); }
-};
+using test::defaultCase;
+using test::runCli;
+using test::ScratchDirectory;
+using test::slurp;
+using test::sourceDir;
 
 struct Finished {
     std::vector<ParticleId> ids;
@@ -190,13 +175,6 @@ TEST_P(InjectionTiming, ParticlesDueInsideAStepFlyOnlyItsRemainder) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, InjectionTiming, ::testing::ValuesIn(integratorNames()),
                          [](const auto& info) { return std::string(info.param.name); });
-
-int runCli(const std::string& arguments, const std::filesystem::path& log) {
-    const std::string command =
-        std::string(SLIDES_TRACK_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
     ScratchDirectory scratch("default-run");

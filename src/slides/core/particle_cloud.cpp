@@ -18,17 +18,11 @@ void ParticleCloud::add(ParticleId particleId, const Vec3& x, const Vec3& v,
 }
 
 void ParticleCloud::removeAt(std::size_t index) {
-    const std::size_t last = size() - 1;
-    if (index != last) {
-        id[index] = id[last];
-        position[index] = position[last];
-        velocity[index] = velocity[last];
-        radius[index] = radius[last];
-    }
-    id.pop_back();
-    position.pop_back();
-    velocity.pop_back();
-    radius.pop_back();
+    forEachArray(*this, [index](const char*, auto& array) {
+        if (array.empty()) return;
+        array[index] = array.back();
+        array.pop_back();
+    });
 }
 
 } // namespace slides

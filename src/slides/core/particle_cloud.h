@@ -31,6 +31,17 @@ struct ParticleCloud {
     void add(ParticleId particleId, const Vec3& x, const Vec3& v, double particleRadius);
     /// Removes the particle at index by moving the last particle into its place.
     void removeAt(std::size_t index);
+
+    /// Calls visit(name, array) for every per-particle array, so that removal, checkpoints
+    /// and restarts (io/checkpoint.h) handle each array a model adds once it is listed here.
+    /// Arrays of models that are off are empty.
+    template <typename Cloud, typename Visitor>
+    static void forEachArray(Cloud& cloud, Visitor visit) {
+        visit("id", cloud.id);
+        visit("position", cloud.position);
+        visit("velocity", cloud.velocity);
+        visit("radius", cloud.radius);
+    }
 };
 
 } // namespace slides

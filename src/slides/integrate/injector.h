@@ -28,6 +28,8 @@ public:
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);
 
     long injected() const { return injected_; }
+    /// Continues as if particles 0 … injected − 1 had been injected (restart).
+    void resumeAfter(long injected) { injected_ = injected; }
     bool finished() const { return injected_ == scene_.particles.count; }
     /// Time at which particle id enters [s].
     double injectionTime(ParticleId id) const;

@@ -26,6 +26,21 @@ bool Stepper::finished() const {
     return scene_.time.stopWhenAllDone && injector_.finished() && cloud_.empty();
 }
 
+StepperCounters Stepper::counters() const {
+    return {time_, steps_, injector_.injected(), escaped_, particleSteps_};
+}
+
+void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
+                     std::vector<Arrival> arrivals) {
+    time_ = counters.time;
+    steps_ = counters.steps;
+    escaped_ = counters.escaped;
+    particleSteps_ = counters.particleSteps;
+    injector_.resumeAfter(counters.injected);
+    cloud_ = std::move(cloud);
+    arrivals_ = std::move(arrivals);
+}
+
 void Stepper::step() {
     const double h = std::min(scene_.time.dt, scene_.time.endTime - time_);
     const std::size_t alreadyInFlight = cloud_.size();

@@ -28,6 +28,15 @@
 
 namespace slides {
 
+/// What a checkpoint holds of a stepper besides its cloud and arrivals (io/checkpoint.h).
+struct StepperCounters {
+    double time = 0; ///< [s]
+    long steps = 0;
+    long injected = 0;
+    long escaped = 0;
+    std::uint64_t particleSteps = 0;
+};
+
 class Stepper {
 public:
     Stepper(const Scene& scene, const CarrierField& carrier);
@@ -44,6 +53,12 @@ public:
     long escaped() const { return escaped_; }
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
+
+    StepperCounters counters() const;
+    /// Continues from a checkpoint's state: every later step is bit for bit the one the
+    /// stepper that wrote the checkpoint would have taken.
+    void resume(const StepperCounters& counters, ParticleCloud cloud,
+                std::vector<Arrival> arrivals);
 
 private:
     void advance(double h);

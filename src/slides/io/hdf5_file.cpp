@@ -1,5 +1,6 @@
 #include "slides/io/hdf5_file.h"
 
+#include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 
 #include <algorithm>
@@ -52,13 +53,22 @@ bool Hdf5Handle::close() {
     return status >= 0;
 }
 
-Hdf5File::Hdf5File(std::filesystem::path path) : path_(std::move(path)) {
+Hdf5File::Hdf5File(std::filesystem::path path, Hdf5Access access)
+    : path_(std::move(path)), access_(access) {
     silenceHdf5Errors();
-    file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-    if (!file_.valid()) fail("cannot create the file");
+    if (access == Hdf5Access::create) {
+        file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+        if (!file_.valid()) fail("cannot create the file");
+        return;
+    }
+    if (!std::filesystem::exists(path_)) fail("no such file");
+    const unsigned flags = access == Hdf5Access::readOnly ? H5F_ACC_RDONLY : H5F_ACC_RDWR;
+    file_ = Hdf5Handle(H5Fopen(path_.c_str(), flags, H5P_DEFAULT));
+    if (!file_.valid()) fail("not a readable HDF5 file (damaged or incomplete)");
 }
 
 void Hdf5File::fail(const std::string& what) const {
+    if (access_ == Hdf5Access::readOnly) throw InputError(path_.string(), 0, "", what);
     throw OutputError("cannot write " + path_.string() + ": " + what);
 }
 
@@ -79,7 +89,8 @@ void Hdf5File::writeRaw(hid_t parent, const std::string& name, hid_t type, const
     if (rows > 0) {
         const std::array<hsize_t, 2> chunk{chunkRows(rows, columns * H5Tget_size(type)), dims[1]};
         if (H5Pset_chunk(creation.get(), rank, chunk.data()) < 0 ||
-            H5Pset_shuffle(creation.get()) < 0 || H5Pset_deflate(creation.get(), 4) < 0)
+            H5Pset_shuffle(creation.get()) < 0 || H5Pset_deflate(creation.get(), 4) < 0 ||
+            (checksums_ && H5Pset_fletcher32(creation.get()) < 0))
             fail("cannot set compression of dataset " + name);
     }
     Hdf5Handle dataset(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
@@ -139,6 +150,84 @@ void Hdf5File::writeAttribute(hid_t object, const std::string& name, double valu
 void Hdf5File::writeAttribute(hid_t object, const std::string& name, std::int64_t value) const {
     if (!writeScalarAttribute(object, name, H5T_NATIVE_INT64, value))
         fail("cannot write attribute " + name);
+}
+
+bool Hdf5File::exists(const std::string& path) const {
+    return H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0;
+}
+
+void Hdf5File::remove(const std::string& path) const {
+    if (H5Ldelete(file_.get(), path.c_str(), H5P_DEFAULT) < 0) fail("cannot remove " + path);
+}
+
+std::size_t Hdf5File::rowsOf(const std::string& path, std::size_t columns) const {
+    Hdf5Handle dataset(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT));
+    if (!dataset.valid()) fail("missing dataset " + path);
+    Hdf5Handle space(H5Dget_space(dataset.get()));
+    std::array<hsize_t, 2> dims{0, 1};
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    if (rank != (columns == 1 ? 1 : 2) ||
+        H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 || dims[1] != columns)
+        fail("dataset " + path + " does not have " + std::to_string(columns) + " column(s)");
+    return static_cast<std::size_t>(dims[0]);
+}
+
+void Hdf5File::readRaw(const std::string& path, hid_t type, void* data, std::size_t values) const {
+    if (values == 0) return;
+    Hdf5Handle dataset(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT));
+    if (!dataset.valid() || H5Dread(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+        fail("cannot read dataset " + path + " (damaged: checksum or decompression failed)");
+}
+
+std::vector<double> Hdf5File::readDoubles(const std::string& path, std::size_t columns) const {
+    const std::size_t rows = rowsOf(path, columns);
+    std::vector<double> values(rows * columns);
+    readRaw(path, H5T_NATIVE_DOUBLE, values.data(), values.size());
+    return values;
+}
+
+std::vector<std::int32_t> Hdf5File::readInt32(const std::string& path) const {
+    std::vector<std::int32_t> values(rowsOf(path, 1));
+    readRaw(path, H5T_NATIVE_INT32, values.data(), values.size());
+    return values;
+}
+
+std::vector<std::uint64_t> Hdf5File::readUInt64(const std::string& path) const {
+    std::vector<std::uint64_t> values(rowsOf(path, 1));
+    readRaw(path, H5T_NATIVE_UINT64, values.data(), values.size());
+    return values;
+}
+
+void Hdf5File::readAttribute(const std::string& object, const std::string& name, hid_t type,
+                             void* value) const {
+    Hdf5Handle attribute(
+        H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+    if (!attribute.valid() || H5Aread(attribute.get(), type, value) < 0)
+        fail("missing or unreadable attribute " + name + " of " + object);
+}
+
+std::string Hdf5File::readText(const std::string& object, const std::string& name) const {
+    Hdf5Handle attribute(
+        H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+    if (!attribute.valid()) fail("missing attribute " + name + " of " + object);
+    Hdf5Handle type(H5Aget_type(attribute.get()));
+    if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0)
+        fail("attribute " + name + " of " + object + " is not a fixed-length string");
+    std::string text(H5Tget_size(type.get()), '\0');
+    readAttribute(object, name, type.get(), text.data());
+    return text.substr(0, text.find('\0'));
+}
+
+double Hdf5File::readDouble(const std::string& object, const std::string& name) const {
+    double value = 0;
+    readAttribute(object, name, H5T_NATIVE_DOUBLE, &value);
+    return value;
+}
+
+std::int64_t Hdf5File::readInt64(const std::string& object, const std::string& name) const {
+    std::int64_t value = 0;
+    readAttribute(object, name, H5T_NATIVE_INT64, &value);
+    return value;
 }
 
 void Hdf5File::flush() const {

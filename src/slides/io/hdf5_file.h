@@ -1,10 +1,11 @@
 // Hdf5File: a small owner of HDF5 C-API handles and the few calls the particle output needs
 // (HDF5 1.10, the library of Debian's libhdf5-dev).
 //
-// Every identifier is closed by its owner; every failing call throws OutputError naming the
-// file and the object, instead of HDF5's own error stack print. Datasets of more than a few
-// elements are chunked, byte-shuffled and deflate-compressed; each carries its SI unit in a
-// `units` attribute.
+// Every identifier is closed by its owner; every failing call throws, naming the file and the
+// object, instead of HDF5's own error stack print: OutputError when writing, InputError when
+// reading (a file given to the program, such as a checkpoint). Datasets are chunked,
+// byte-shuffled and deflate-compressed (and Fletcher-32 checksummed on request, so corrupted
+// data is refused on reading); each carries its SI unit in a `units` attribute.
 #pragma once
 
 #include <hdf5.h>
@@ -39,11 +40,16 @@ private:
     hid_t id_ = H5I_INVALID_HID;
 };
 
-/// One HDF5 file being written: create it, add groups, datasets and attributes.
+enum class Hdf5Access { create, readOnly, readWrite };
+
+/// One HDF5 file: create it and add groups, datasets and attributes, or read them back.
 class Hdf5File {
 public:
-    /// Creates (truncates) the file; throws OutputError if it cannot.
-    explicit Hdf5File(std::filesystem::path path);
+    /// Creates (truncates) the file, or opens an existing one; throws if it cannot.
+    explicit Hdf5File(std::filesystem::path path, Hdf5Access access = Hdf5Access::create);
+
+    /// Datasets written from now on carry a Fletcher-32 checksum.
+    void checksumData() { checksums_ = true; }
 
     /// Creates the group at path (parents must exist), e.g. "/frames/000003".
     Hdf5Handle createGroup(const std::string& path) const;
@@ -60,6 +66,18 @@ public:
     void writeAttribute(hid_t object, const std::string& name, double value) const;
     void writeAttribute(hid_t object, const std::string& name, std::int64_t value) const;
 
+    bool exists(const std::string& path) const;
+    /// Unlinks the object at path (e.g. a group of frames written after a checkpoint).
+    void remove(const std::string& path) const;
+
+    /// A dataset's values; columns is the length of its second dimension (1: one-dimensional).
+    std::vector<double> readDoubles(const std::string& path, std::size_t columns) const;
+    std::vector<std::int32_t> readInt32(const std::string& path) const;
+    std::vector<std::uint64_t> readUInt64(const std::string& path) const;
+    std::string readText(const std::string& object, const std::string& name) const;
+    double readDouble(const std::string& object, const std::string& name) const;
+    std::int64_t readInt64(const std::string& object, const std::string& name) const;
+
     /// Pushes everything written so far to the file on disk.
     void flush() const;
     /// Closes the file; throws OutputError if the final write fails.
@@ -71,9 +89,15 @@ public:
 private:
     void writeRaw(hid_t parent, const std::string& name, hid_t type, const void* data,
                   std::size_t rows, std::size_t columns, std::string_view units) const;
+    void readRaw(const std::string& path, hid_t type, void* data, std::size_t values) const;
+    std::size_t rowsOf(const std::string& path, std::size_t columns) const;
+    void readAttribute(const std::string& object, const std::string& name, hid_t type,
+                       void* value) const;
     [[noreturn]] void fail(const std::string& what) const;
 
     std::filesystem::path path_;
+    Hdf5Access access_;
+    bool checksums_ = false;
     Hdf5Handle file_;
 };
 

@@ -20,6 +20,12 @@ std::filesystem::path partialPath(const std::filesystem::path& directory) {
     return directory / (std::string(ParticlesHdf5::fileName) + ".partial");
 }
 
+std::string frameGroup(std::size_t index) {
+    char group[48];
+    std::snprintf(group, sizeof group, "/frames/%06zu", index);
+    return group;
+}
+
 } // namespace
 
 ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::string& caseName)
@@ -31,16 +37,25 @@ ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::
     file_->createGroup("/frames");
 }
 
+ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory,
+                             std::span<const FrameRecord> written, ParticleFieldSet fields)
+    : directory_(directory) {
+    file_.emplace(partialPath(directory), Hdf5Access::readWrite);
+    for (const auto& frame : written)
+        frames_.push_back({frameGroup(frames_.size()), frame.time, frame.count, fields});
+}
+
+std::filesystem::path ParticlesHdf5::partialFile() const { return partialPath(directory_); }
+
 void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     const std::size_t count = frame.id.size();
     if (frame.position.size() != count || frame.velocity.size() != count ||
         frame.radius.size() != count || frame.state.size() != count)
         throw std::invalid_argument("particle frame arrays differ in length");
-    char group[32];
-    std::snprintf(group, sizeof group, "/frames/%06zu", frames_.size());
+    const std::string group = frameGroup(frames_.size());
     const Hdf5File& file = *file_;
-    const Hdf5Handle frameGroup = file.createGroup(group);
-    const hid_t g = frameGroup.get();
+    const Hdf5Handle created = file.createGroup(group);
+    const hid_t g = created.get();
     file.writeAttribute(g, "time", time);
     file.writeDataset(g, "position", flattened(frame.position), 3, "m");
     const auto has = [&](ParticleField field) { return frame.fields.contains(field); };

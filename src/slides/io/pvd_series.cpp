@@ -34,11 +34,22 @@ constexpr std::string_view tail = "  </Collection>\n</VTKFile>\n";
 
 PvdSeries::PvdSeries(std::filesystem::path file) : file_(std::move(file)) {}
 
-void PvdSeries::add(double time, const std::string& relativeFile) {
+std::string PvdSeries::dataSetLine(double time, const std::string& relativeFile) {
     char timestep[32];
     std::snprintf(timestep, sizeof timestep, "%.17g", time);
-    std::string dataSets = dataSets_ + "    <DataSet timestep=\"" + timestep +
-                           "\" part=\"0\" file=\"" + xmlAttribute(relativeFile) + "\"/>\n";
+    return std::string("    <DataSet timestep=\"") + timestep + "\" part=\"0\" file=\"" +
+           xmlAttribute(relativeFile) + "\"/>\n";
+}
+
+void PvdSeries::add(double time, const std::string& relativeFile) {
+    std::string dataSets = dataSets_ + dataSetLine(time, relativeFile);
+    writeTextAtomically(file_, std::string(head) + dataSets + std::string(tail));
+    dataSets_ = std::move(dataSets);
+}
+
+void PvdSeries::resume(std::span<const std::pair<double, std::string>> frames) {
+    std::string dataSets;
+    for (const auto& [time, relativeFile] : frames) dataSets += dataSetLine(time, relativeFile);
     writeTextAtomically(file_, std::string(head) + dataSets + std::string(tail));
     dataSets_ = std::move(dataSets);
 }

@@ -7,8 +7,9 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
-#include <vector>
+#include <utility>
 
 namespace slides {
 
@@ -20,10 +21,14 @@ public:
     /// Appends a frame at time [s] (written with 17 significant digits, so it reads back
     /// bit for bit) and rewrites the collection; throws OutputError, the series unchanged.
     void add(double time, const std::string& relativeFile);
+    /// Replaces the series by these (time, file) frames and rewrites it (restart).
+    void resume(std::span<const std::pair<double, std::string>> frames);
 
     const std::filesystem::path& file() const { return file_; }
 
 private:
+    static std::string dataSetLine(double time, const std::string& relativeFile);
+
     std::filesystem::path file_;
     std::string dataSets_; ///< the <DataSet/> lines written so far
 };

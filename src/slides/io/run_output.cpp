@@ -1,28 +1,46 @@
 #include "slides/io/run_output.h"
 
 #include "slides/io/atomic_file.h"
+#include "slides/io/checkpoint.h"
 #include "slides/io/vtk_carrier_grid.h"
 #include "slides/io/vtk_particles.h"
 
+#include <charconv>
 #include <cstdio>
+#include <string_view>
 #include <system_error>
 
 namespace slides {
 
 namespace {
 
-std::filesystem::path prepared(std::filesystem::path directory) {
+std::string frameFileName(std::size_t index) {
+    char name[48];
+    std::snprintf(name, sizeof name, "particles_%06zu.vtp", index);
+    return name;
+}
+
+/// Creates directory and removes what an earlier run left there: its particle files and
+/// checkpoint; on a restart only the frames after the `kept` ones and the finished HDF5 files
+/// (the checkpoint restored particles.h5.partial).
+std::filesystem::path prepared(std::filesystem::path directory, std::optional<std::size_t> kept) {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error)
         throw OutputError("cannot create output directory " + directory.string() + ": " +
                           error.message());
-    // Particle files of an earlier run would otherwise mix with this one's.
+    const std::string partial = std::string(ParticlesHdf5::fileName) + ".partial";
     for (const auto& entry : std::filesystem::directory_iterator(directory)) {
         const std::string name = entry.path().filename().string();
-        if ((name.starts_with("particles_") && name.ends_with(".vtp")) ||
-            name.starts_with(ParticlesHdf5::fileName) || name == ParticlesHdf5::indexName)
-            std::filesystem::remove(entry.path());
+        bool stale = name == ParticlesHdf5::fileName || name == ParticlesHdf5::indexName;
+        if (name.starts_with("particles_") && name.ends_with(".vtp")) {
+            const std::string_view digits(name.data() + 10, name.size() - 14);
+            std::size_t index = 0;
+            const auto parsed = std::from_chars(digits.begin(), digits.end(), index);
+            stale = !kept || parsed.ptr != digits.end() || index >= *kept;
+        }
+        if (!kept) stale = stale || name == partial || name == checkpointFileName;
+        if (stale) std::filesystem::remove(entry.path());
     }
     return directory;
 }
@@ -30,13 +48,27 @@ std::filesystem::path prepared(std::filesystem::path directory) {
 } // namespace
 
 RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
-                     const CarrierField& carrier)
-    : directory_(prepared(std::move(directory))), series_(directory_ / "particles.pvd"),
-      fields_(scene.output.fields) {
-    if (scene.output.hdf5)
+                     const CarrierField& carrier, const std::vector<FrameRecord>* resumed)
+    : directory_(
+          prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
+      series_(directory_ / "particles.pvd"), fields_(scene.output.fields) {
+    if (resumed) {
+        frames_ = *resumed;
+        std::vector<std::pair<double, std::string>> series;
+        for (std::size_t n = 0; n < frames_.size(); ++n)
+            series.emplace_back(frames_[n].time, frameFileName(n));
+        series_.resume(series);
+        if (scene.output.hdf5) hdf5_.emplace(directory_, frames_, fields_);
+    } else if (scene.output.hdf5) {
         hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
+    }
     writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
                     scene.output.carrierResolution, 0.0);
+}
+
+std::optional<std::filesystem::path> RunOutput::hdf5File() const {
+    if (!hdf5_) return std::nullopt;
+    return hdf5_->partialFile();
 }
 
 void RunOutput::writeFrame(const Stepper& stepper) {
@@ -53,13 +85,12 @@ void RunOutput::writeFrame(const Stepper& stepper) {
         radii_.push_back(arrival.radius);
         states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
     }
-    char name[32];
-    std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
+    const std::string name = frameFileName(frames_.size());
     const ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
     writeParticlesVtp(directory_ / name, frame);
     if (hdf5_) hdf5_->writeFrame(stepper.time(), frame);
     series_.add(stepper.time(), name);
-    ++frames_;
+    frames_.push_back({stepper.time(), ids_.size()});
 }
 
 void RunOutput::finish(const Stepper& stepper, const nlohmann::json& summary) {

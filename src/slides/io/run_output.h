@@ -13,6 +13,7 @@
 #include "slides/carrier/carrier_field.h"
 #include "slides/config/scene.h"
 #include "slides/integrate/stepper.h"
+#include "slides/io/frame_record.h"
 #include "slides/io/hdf5_particles.h"
 #include "slides/io/pvd_series.h"
 
@@ -24,9 +25,12 @@ namespace slides {
 
 class RunOutput {
 public:
-    /// Creates the directory, removes the particle files of an earlier run there and writes
-    /// carrier.vti.
-    RunOutput(std::filesystem::path directory, const Scene& scene, const CarrierField& carrier);
+    /// Creates the directory, removes the particle files and checkpoint of an earlier run
+    /// there and writes carrier.vti. With `resumed` (a restart, io/checkpoint.h), continues
+    /// after those frames instead: the later frames of the interrupted run are removed, the
+    /// series rewritten with the earlier ones, and particles.h5.partial continued.
+    RunOutput(std::filesystem::path directory, const Scene& scene, const CarrierField& carrier,
+              const std::vector<FrameRecord>* resumed = nullptr);
 
     /// Writes the frame of the stepper's current state.
     void writeFrame(const Stepper& stepper);
@@ -34,14 +38,16 @@ public:
     void finish(const Stepper& stepper, const nlohmann::json& summary);
 
     const std::filesystem::path& directory() const { return directory_; }
-    int frames() const { return frames_; }
+    const std::vector<FrameRecord>& frames() const { return frames_; }
+    /// The HDF5 file being written, when output.hdf5 is on (a checkpoint copies it).
+    std::optional<std::filesystem::path> hdf5File() const;
 
 private:
     std::filesystem::path directory_;
     PvdSeries series_;
     std::optional<ParticlesHdf5> hdf5_;
     ParticleFieldSet fields_;
-    int frames_ = 0;
+    std::vector<FrameRecord> frames_;
     // Frame scratch: moving particles then arrivals.
     std::vector<std::uint64_t> ids_;
     std::vector<Vec3> positions_;

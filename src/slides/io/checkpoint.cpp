@@ -1,0 +1,236 @@
+#include "slides/io/checkpoint.h"
+
+#include "slides/core/error.h"
+#include "slides/io/atomic_file.h"
+#include "slides/io/hdf5_file.h"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+namespace slides {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* group = "/checkpoint";
+
+std::string hex(std::uint64_t value) {
+    char text[20];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+}
+
+/// The shortest text that reads back as exactly this value.
+std::string shortest(double value) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+    return std::string(text, end);
+}
+
+/// FNV-1a, 64 bit: a stable hash of the dictionary's bytes (std::hash is not stable).
+std::uint64_t fnv1a(const std::string& bytes) {
+    std::uint64_t hash = 14695981039346656037ULL;
+    for (const unsigned char byte : bytes) hash = (hash ^ byte) * 1099511628211ULL;
+    return hash;
+}
+
+// One column per per-particle array type; units are SI, as everywhere.
+void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
+                 const std::vector<std::uint64_t>& values) {
+    file.writeDataset(parent, name, values, "1");
+}
+void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
+                 const std::vector<std::int32_t>& values) {
+    file.writeDataset(parent, name, values, "1");
+}
+void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
+                 const std::vector<double>& values) {
+    file.writeDataset(parent, name, values, 1, "SI");
+}
+void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
+                 const std::vector<Vec3>& values) {
+    file.writeDataset(parent, name,
+                      {reinterpret_cast<const double*>(values.data()), 3 * values.size()}, 3, "SI");
+}
+
+void readColumn(const Hdf5File& file, const std::string& path, std::vector<std::uint64_t>& out) {
+    out = file.readUInt64(path);
+}
+void readColumn(const Hdf5File& file, const std::string& path, std::vector<std::int32_t>& out) {
+    out = file.readInt32(path);
+}
+void readColumn(const Hdf5File& file, const std::string& path, std::vector<double>& out) {
+    out = file.readDoubles(path, 1);
+}
+void readColumn(const Hdf5File& file, const std::string& path, std::vector<Vec3>& out) {
+    const auto flat = file.readDoubles(path, 3);
+    out.resize(flat.size() / 3);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
+}
+
+/// The arrivals as columns, in order.
+struct ArrivalColumns {
+    std::vector<std::uint64_t> id;
+    std::vector<std::int32_t> surface;
+    std::vector<double> time, radius;
+    std::vector<Vec3> position, velocity;
+
+    template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
+        visit("id", c.id);
+        visit("surface", c.surface);
+        visit("time", c.time);
+        visit("position", c.position);
+        visit("velocity", c.velocity);
+        visit("radius", c.radius);
+    }
+};
+
+void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& output,
+                double nextFrameTime, const RunFingerprint& fingerprint) {
+    const Hdf5Handle checkpoint = file.createGroup(group);
+    const hid_t g = checkpoint.get();
+    file.writeAttribute(g, "version", fingerprint.version);
+    file.writeAttribute(g, "dictionaryHash", hex(fingerprint.dictionaryHash));
+    file.writeAttribute(g, "dt", fingerprint.dt);
+    const StepperCounters counters = stepper.counters();
+    file.writeAttribute(g, "time", counters.time);
+    file.writeAttribute(g, "steps", std::int64_t{counters.steps});
+    file.writeAttribute(g, "injected", std::int64_t{counters.injected});
+    file.writeAttribute(g, "escaped", std::int64_t{counters.escaped});
+    file.writeAttribute(g, "particleSteps", static_cast<std::int64_t>(counters.particleSteps));
+    file.writeAttribute(g, "nextFrameTime", nextFrameTime);
+
+    const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
+    ParticleCloud::forEachArray(stepper.cloud(), [&](const char* name, const auto& array) {
+        writeColumn(file, cloud.get(), name, array);
+    });
+    ArrivalColumns arrivals;
+    for (const Arrival& arrival : stepper.arrivals()) {
+        arrivals.id.push_back(arrival.id);
+        arrivals.surface.push_back(arrival.surface);
+        arrivals.time.push_back(arrival.time);
+        arrivals.radius.push_back(arrival.radius);
+        arrivals.position.push_back(arrival.position);
+        arrivals.velocity.push_back(arrival.velocity);
+    }
+    const Hdf5Handle arrived = file.createGroup(std::string(group) + "/arrivals");
+    ArrivalColumns::forEach(arrivals, [&](const char* name, const auto& array) {
+        writeColumn(file, arrived.get(), name, array);
+    });
+    std::vector<double> frameTimes;
+    std::vector<std::uint64_t> frameCounts;
+    for (const auto& frame : output.frames()) {
+        frameTimes.push_back(frame.time);
+        frameCounts.push_back(frame.count);
+    }
+    writeColumn(file, g, "frameTimes", frameTimes);
+    writeColumn(file, g, "frameCounts", frameCounts);
+}
+
+[[noreturn]] void refuse(const fs::path& file, const std::string& why) {
+    throw InputError(file.string(), 0, "", why + "; cannot restart from it");
+}
+
+RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
+    const std::string g = group;
+    if (!file.exists(g)) refuse(file.path(), "not a checkpoint (no " + g + " group)");
+    const std::string version = file.readText(g, "version");
+    if (version != expected.version)
+        refuse(file.path(), "written by SLIDES-track " + version + ", this is " + expected.version);
+    const std::string hash = file.readText(g, "dictionaryHash");
+    if (hash != hex(expected.dictionaryHash))
+        refuse(file.path(), "written for another case dictionary (hash " + hash +
+                                ", constant/slidesProperties now hashes to " +
+                                hex(expected.dictionaryHash) + ")");
+    const double dt = file.readDouble(g, "dt");
+    if (dt != expected.dt)
+        refuse(file.path(), "written with dt = " + shortest(dt) +
+                                " s, this run has dt = " + shortest(expected.dt) + " s");
+
+    RunState state;
+    state.counters.time = file.readDouble(g, "time");
+    state.counters.steps = file.readInt64(g, "steps");
+    state.counters.injected = file.readInt64(g, "injected");
+    state.counters.escaped = file.readInt64(g, "escaped");
+    state.counters.particleSteps = static_cast<std::uint64_t>(file.readInt64(g, "particleSteps"));
+    state.nextFrameTime = file.readDouble(g, "nextFrameTime");
+
+    const std::size_t count = file.readUInt64(g + "/cloud/id").size();
+    ParticleCloud::forEachArray(state.cloud, [&](const char* name, auto& array) {
+        readColumn(file, g + "/cloud/" + name, array);
+        if (!array.empty() && array.size() != count)
+            refuse(file.path(), std::string("damaged: cloud array ") + name + " has " +
+                                    std::to_string(array.size()) + " entries, not " +
+                                    std::to_string(count));
+    });
+    ArrivalColumns arrivals;
+    ArrivalColumns::forEach(arrivals, [&](const char* name, auto& array) {
+        readColumn(file, g + "/arrivals/" + name, array);
+    });
+    for (std::size_t i = 0; i < arrivals.id.size(); ++i)
+        state.arrivals.push_back({arrivals.id[i], arrivals.surface.at(i), arrivals.time.at(i),
+                                  arrivals.position.at(i), arrivals.velocity.at(i),
+                                  arrivals.radius.at(i)});
+    const auto frameTimes = file.readDoubles(g + "/frameTimes", 1);
+    const auto frameCounts = file.readUInt64(g + "/frameCounts");
+    if (frameTimes.size() != frameCounts.size()) refuse(file.path(), "damaged: frame lists differ");
+    for (std::size_t n = 0; n < frameTimes.size(); ++n)
+        state.frames.push_back({frameTimes[n], frameCounts[n]});
+    return state;
+}
+
+} // namespace
+
+RunFingerprint fingerprintOf(const Scene& scene) {
+    std::ifstream in(scene.dictionaryFile, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return {SLIDES_VERSION, fnv1a(bytes), scene.time.dt};
+}
+
+void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nextFrameTime,
+                     const RunFingerprint& fingerprint) {
+    writeFileAtomically(output.directory() / checkpointFileName, [&](const fs::path& temporary) {
+        const auto hdf5 = output.hdf5File(); // flushed after its last frame: consistent on disk
+        if (hdf5) {
+            std::error_code error;
+            fs::copy_file(*hdf5, temporary, fs::copy_options::overwrite_existing, error);
+            if (error)
+                throw OutputError("cannot copy " + hdf5->string() +
+                                  " into the checkpoint: " + error.message());
+        }
+        Hdf5File file(temporary, hdf5 ? Hdf5Access::readWrite : Hdf5Access::create);
+        file.checksumData();
+        writeState(file, stepper, output, nextFrameTime, fingerprint);
+        file.close();
+    });
+}
+
+RunState resumeFromCheckpoint(const fs::path& directory, const Scene& scene,
+                              const RunFingerprint& fingerprint) {
+    const fs::path path = directory / checkpointFileName;
+    if (!fs::exists(path)) refuse(path, "no checkpoint here (write one with --checkpoint-every N)");
+    RunState state;
+    {
+        const Hdf5File file(path, Hdf5Access::readOnly);
+        state = readState(file, fingerprint);
+    }
+    if (scene.output.hdf5) {
+        // The frames the checkpoint holds become the HDF5 file the run continues.
+        const fs::path partial = directory / (std::string(ParticlesHdf5::fileName) + ".partial");
+        std::error_code error;
+        fs::copy_file(path, partial, fs::copy_options::overwrite_existing, error);
+        if (error)
+            throw OutputError("cannot restore " + partial.string() + " from " + path.string() +
+                              ": " + error.message());
+        Hdf5File file(partial, Hdf5Access::readWrite);
+        file.remove(group);
+        file.close();
+    }
+    return state;
+}
+
+} // namespace slides
