@@ -575,6 +575,15 @@ TEST(DictionaryInclude, MissingIncludedFileIsReportedAtTheDirective) {
     EXPECT_NE(std::string(error.what()).find("no such file"), std::string::npos);
 }
 
+TEST(DictionaryInclude, DeviceIsRefusedInsteadOfReadForever) {
+    // /dev/zero never ends: an #include of it must fail at once, not hang the run.
+    TemporaryDirectory directory;
+    const fs::path main = directory.write("main", "a 1;\n#include \"/dev/zero\"\n");
+    const InputError error = readError([&] { Dictionary::parseFile(main); });
+    EXPECT_EQ(error.line(), 2);
+    EXPECT_NE(std::string(error.what()).find("not a regular file"), std::string::npos);
+}
+
 TEST(DictionaryInclude, RecursiveIncludeIsAnError) {
     TemporaryDirectory directory;
     const fs::path first = directory.write("first", "a 1;\n#include \"second\"\n");

@@ -37,6 +37,11 @@ std::optional<std::string> readText(const std::filesystem::path& file, std::stri
         why = "it is a directory, not a dictionary file";
         return std::nullopt;
     }
+    if (!std::filesystem::is_regular_file(file, error)) {
+        // A device or pipe (such as /dev/zero) could be read forever.
+        why = "not a regular file (a device, pipe or socket)";
+        return std::nullopt;
+    }
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         why = "cannot open it (permissions?)";

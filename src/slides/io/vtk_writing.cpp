@@ -3,6 +3,7 @@
 #include "slides/io/atomic_file.h"
 
 #include <vtkErrorCode.h>
+#include <vtkObject.h>
 
 namespace slides {
 
@@ -12,7 +13,12 @@ void writeVtkAtomically(const std::filesystem::path& file, vtkXMLWriter* writer)
     writer->EncodeAppendedDataOff();
     writeFileAtomically(file, [&](const std::filesystem::path& temporary) {
         writer->SetFileName(temporary.c_str());
-        if (writer->Write() != 1 || writer->GetErrorCode() != 0)
+        // A failure becomes the one OutputError below, not VTK's multi-line pipeline report.
+        const bool warnings = vtkObject::GetGlobalWarningDisplay();
+        vtkObject::GlobalWarningDisplayOff();
+        const int written = writer->Write();
+        vtkObject::SetGlobalWarningDisplay(warnings);
+        if (written != 1 || writer->GetErrorCode() != 0)
             throw OutputError("cannot write " + file.string() + ": VTK writer failed (" +
                               std::string(vtkErrorCode::GetStringFromErrorCode(
                                   static_cast<int>(writer->GetErrorCode()))) +

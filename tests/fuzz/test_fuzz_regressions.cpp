@@ -1,0 +1,44 @@
+// ctest-labels: io
+// Replays every input kept in tests/fuzz/regressions/<target>/ (inputs on which a reader once
+// crashed, hung or misbehaved; tools/fuzz/run adds them) through the same entry point as the
+// fuzz target. Each must end in success or an InputError naming the file: under tools/sanitize
+// also without any sanitizer report.
+#include "../support/fuzz_entries.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace slides {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> keptInputs(const std::string& target) {
+    std::vector<fs::path> inputs;
+    const fs::path folder = fs::path(SLIDES_SOURCE_DIR) / "tests" / "fuzz" / "regressions" / target;
+    for (const auto& entry : fs::directory_iterator(folder)) inputs.push_back(entry.path());
+    std::sort(inputs.begin(), inputs.end());
+    return inputs;
+}
+
+std::string bytesOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+TEST(FuzzRegressions, DictionaryInputsEndInSuccessOrAnInputError) {
+    const auto inputs = keptInputs("dictionary");
+    ASSERT_FALSE(inputs.empty());
+    for (const auto& input : inputs) {
+        SCOPED_TRACE(input.filename().string());
+        EXPECT_NO_THROW(fuzz::readDictionaryText(bytesOf(input)));
+    }
+}
+
+} // namespace
+} // namespace slides
