@@ -9,6 +9,8 @@
 
 #include <fstream>
 
+#include <unistd.h>
+
 namespace slides {
 namespace {
 

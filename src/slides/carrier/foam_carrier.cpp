@@ -92,6 +92,19 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
         cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
 }
 
+Mat3 FoamCarrier::wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity,
+                                    const Vec3& x) const {
+    if (!wedge_) return gradient;
+    // Axisymmetric field in cylindrical coordinates: ∂U/∂(rθ) = (u_r/r) e_θ − (u_θ/r) e_r, a
+    // column the one cell thick wedge cannot resolve; it replaces the tetrahedron's e_θ column.
+    const double radius = (x - wedge_->origin).dot(wedge_->radial);
+    if (!(radius > 0)) return gradient;
+    const Vec3 hoop = wedge_->axis.cross(wedge_->radial);
+    const Vec3 column =
+        (velocity.dot(wedge_->radial) * hoop - velocity.dot(hoop) * wedge_->radial) / radius;
+    return gradient - (gradient * hoop) * hoop.transpose() + column * hoop.transpose();
+}
+
 void FoamCarrier::missing(const std::string& field) const {
     throw InputError((timeDirectory_ / field).string(), 0, "",
                      "missing field " + field + ", needed by the chosen physics");
@@ -121,7 +134,8 @@ void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNee
     if (needs.velocityGradient) {
         const Mat3 gradient =
             cellScheme ? cellGradients_[at.cell] : tetGradient(mesh_, *locator_, *velocity_, at);
-        out.velocityGradient[i] = rotation * gradient * rotation.transpose();
+        out.velocityGradient[i] =
+            rotation * wedgeHoopGradient(gradient, value(*velocity_), x) * rotation.transpose();
     }
     if (needs.turbulence) {
         out.turbulentKineticEnergy[i] = value(*k_);

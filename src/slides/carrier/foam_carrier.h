@@ -5,7 +5,8 @@
 // interpolates every field with the same weights (carrier/foam_interpolation.h), as preCICE
 // computes a mapping once and applies it to each field. A wedge mesh (axisymmetric case) is
 // tracked in 3-D: a point maps to the wedge's centre plane by its axial coordinate and radius,
-// and the sampled U and ∇U are rotated back about the axis. A 2-D mesh (empty patches) is
+// and the sampled U and ∇U are rotated back about the axis (∇U with its hoop column u_r/r,
+// which a wedge one cell thick cannot resolve). A 2-D mesh (empty patches) is
 // sampled on its mid plane. Points outside the mesh see still gas; sampleFrom marks them with the
 // patch they left through, and the stepper counts them as escaped.
 //
@@ -56,6 +57,8 @@ public:
 private:
     void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
                   std::size_t index) const;
+    /// The gradient at wedge point x with the hoop column of an axisymmetric field.
+    Mat3 wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity, const Vec3& x) const;
     [[noreturn]] void missing(const std::string& field) const;
 
     std::filesystem::path timeDirectory_;

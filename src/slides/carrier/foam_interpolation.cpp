@@ -10,6 +10,52 @@ bool givesBoundaryValues(PatchType type) {
     return type == PatchType::patch || type == PatchType::wall;
 }
 
+struct PointFit {
+    std::vector<double> weights;
+    bool rankDeficient = false; ///< the samples do not fix a linear function (e.g. coplanar)
+};
+
+/// Weighted least squares for φ(x) = φ̄ + g·(x − x̄) about the weighted mean x̄ of the samples
+/// (cell centres, or boundary face centres for s ≥ cellCount), w = 1/|x − x_p|²:
+/// g = C⁺ Σ w_k (x_k − x̄) φ_k with C = Σ w_k (x_k − x̄)(x_k − x̄)ᵀ, so the point value is
+/// Σ_k α_k φ_k with α_k = w_k/W + w_k (x_p − x̄)ᵀ C⁺ (x_k − x̄). Exact for linear φ when C has
+/// full rank; with samples in a plane (2-D, wedge) the pseudo-inverse fits within the plane.
+PointFit fitPoint(const FoamMesh& mesh, const Vec3& here, const std::vector<int>& samples) {
+    const auto centre = [&](int s) -> const Vec3& {
+        return s < mesh.cellCount ? mesh.cellCentres[s] : mesh.faceCentres[s - mesh.cellCount];
+    };
+    double scale = 0;
+    for (const int s : samples) scale = std::max(scale, (centre(s) - here).norm());
+    std::vector<Vec3> offsets; // scaled: the fit is well conditioned
+    std::vector<double> weights;
+    Vec3 mean = Vec3::Zero();
+    double total = 0;
+    for (const int s : samples) {
+        offsets.push_back((centre(s) - here) / scale);
+        weights.push_back(1 / std::max(offsets.back().squaredNorm(), 1e-24));
+        mean += weights.back() * offsets.back();
+        total += weights.back();
+    }
+    mean /= total;
+    Mat3 spread = Mat3::Zero();
+    for (std::size_t k = 0; k < samples.size(); ++k)
+        spread += weights[k] * (offsets[k] - mean) * (offsets[k] - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(spread);
+    const double largest = eigen.eigenvalues().maxCoeff();
+    Vec3 inverse = Vec3::Zero();
+    PointFit fit;
+    for (int i = 0; i < 3; ++i) {
+        const double value = eigen.eigenvalues()[i];
+        if (value > 1e-12 * largest) inverse[i] = 1 / value;
+        if (value < 1e-3 * largest) fit.rankDeficient = true; // or nearly: ill-conditioned
+    }
+    const Vec3 toPoint = eigen.eigenvectors() * inverse.asDiagonal() *
+                         eigen.eigenvectors().transpose() * (-mean); // C⁺ (x_p − x̄)
+    for (std::size_t k = 0; k < samples.size(); ++k)
+        fit.weights.push_back(weights[k] / total + weights[k] * toPoint.dot(offsets[k] - mean));
+    return fit;
+}
+
 } // namespace
 
 PointWeights::PointWeights(const FoamMesh& mesh) : mesh_(mesh) {
@@ -30,40 +76,20 @@ PointWeights::PointWeights(const FoamMesh& mesh) : mesh_(mesh) {
         auto& list = around[p];
         std::sort(list.begin(), list.end());
         list.erase(std::unique(list.begin(), list.end()), list.end());
-        // Weighted least squares for φ(x) = a + g·(x − x_p) with w = 1/|x − x_p|²; the point
-        // value is a = Σ w_k r·(1, d_k) φ_k with r = M⁺ e0, M = Σ w_k (1, d_k)(1, d_k)ᵀ.
-        const Vec3& here = mesh.points[p];
-        std::vector<Eigen::Vector4d> rows;
-        std::vector<double> rowWeights;
-        double scale = 0;
-        for (const int s : list) {
-            const Vec3& at =
-                s < mesh.cellCount ? mesh.cellCentres[s] : mesh.faceCentres[s - mesh.cellCount];
-            scale = std::max(scale, (at - here).norm());
+        PointFit fit = fitPoint(mesh, mesh.points[p], list);
+        if (fit.rankDeficient) { // too few samples about a boundary point: add the next cells
+            std::vector<int> wider = list;
+            for (const int s : list)
+                if (s < mesh.cellCount)
+                    for (const int f : mesh.facesOf(s))
+                        if (const int next = mesh.across(f, s); next >= 0) wider.push_back(next);
+            std::sort(wider.begin(), wider.end());
+            wider.erase(std::unique(wider.begin(), wider.end()), wider.end());
+            list = wider;
+            fit = fitPoint(mesh, mesh.points[p], list);
         }
-        Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-        for (const int s : list) {
-            const Vec3& at =
-                s < mesh.cellCount ? mesh.cellCentres[s] : mesh.faceCentres[s - mesh.cellCount];
-            const Vec3 d = (at - here) / scale; // scaled: the fit is well conditioned
-            const double w = 1 / std::max(d.squaredNorm(), 1e-24);
-            Eigen::Vector4d row(1, d.x(), d.y(), d.z());
-            rows.push_back(row);
-            rowWeights.push_back(w);
-            normal += w * row * row.transpose();
-        }
-        // Pseudo-inverse: samples in a plane (2-D and wedge meshes) leave one direction unfit.
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(normal);
-        const double largest = eigen.eigenvalues().maxCoeff();
-        Eigen::Vector4d inverse = Eigen::Vector4d::Zero();
-        for (int i = 0; i < 4; ++i)
-            if (eigen.eigenvalues()[i] > 1e-12 * largest) inverse[i] = 1 / eigen.eigenvalues()[i];
-        const Eigen::Vector4d r = eigen.eigenvectors() * inverse.asDiagonal() *
-                                  eigen.eigenvectors().transpose() * Eigen::Vector4d::UnitX();
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            samples_.push_back(list[k]);
-            weights_.push_back(rowWeights[k] * r.dot(rows[k]));
-        }
+        samples_.insert(samples_.end(), list.begin(), list.end());
+        weights_.insert(weights_.end(), fit.weights.begin(), fit.weights.end());
         offsets_[p + 1] = static_cast<int>(samples_.size());
     }
 }

@@ -6,7 +6,8 @@
 // boundary face values, then linear (barycentric) within the tetrahedron; the gradient is the
 // tetrahedron's constant gradient. Point values come from an inverse-distance-squared weighted
 // least-squares linear fit about the point (OpenFOAM's volPointInterpolation averages with
-// inverse-distance weights, which is not exact for a linear field; the fit is, on any mesh).
+// inverse-distance weights, which is not exact for a linear field; the fit is, on any mesh: a
+// boundary point whose cells and faces do not fix a linear function adds the next cells).
 //
 //     carrier { type foamField; foamFieldCoeffs { interpolation cellPoint; } }
 #pragma once
