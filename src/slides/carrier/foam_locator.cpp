@@ -93,8 +93,10 @@ std::optional<TetLocation> FoamLocator::locateInCell(const Vec3& point, int cell
 
 TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
     TetLocation outside;
+    const Vec3 slack = 1e-9 * (mesh_.boundsMax - mesh_.boundsMin); // points on the boundary
     for (int axis = 0; axis < 3; ++axis)
-        if (point[axis] < mesh_.boundsMin[axis] || point[axis] > mesh_.boundsMax[axis])
+        if (point[axis] < mesh_.boundsMin[axis] - slack[axis] ||
+            point[axis] > mesh_.boundsMax[axis] + slack[axis])
             return outside;
     std::array<int, 3> index{};
     for (int axis = 0; axis < 3; ++axis)
