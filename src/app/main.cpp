@@ -2,8 +2,8 @@
 //
 //     slides-track foamCases/analyticSpray            # results in foamCases/analyticSpray/slides/
 //     slides-track CASE --output DIR --dt 1e-5 --threads 2
-//     slides-track CASE --checkpoint-every 500     # then, after a crash: slides-track CASE
-//     --restart
+//     slides-track foamCases/impingingJet --time 500     # an OpenFOAM case, its time 500
+//     slides-track CASE --checkpoint-every 500     # after a crash: slides-track CASE --restart
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_keys.h"
@@ -32,6 +32,7 @@ struct Options {
     std::string output;
     std::optional<double> endTime;
     std::optional<double> dt;
+    std::optional<std::string> time;
     int threads = 0;
     long checkpointEvery = 0; ///< steps between checkpoints; 0: none
     bool restart = false;
@@ -50,6 +51,12 @@ void applyOverrides(const Options& options, slides::Scene& scene) {
         if (!(*options.dt > 0))
             throw slides::InputError("command line", 0, "--dt", "must be positive");
         scene.time.dt = *options.dt;
+    }
+    if (options.time) {
+        if (scene.carrier.type != slides::CarrierType::foamField)
+            throw slides::InputError("command line", 0, "--time",
+                                     "only an OpenFOAM carrier (foamField) has time directories");
+        scene.carrier.foamTime = *options.time;
     }
     if (scene.time.dt > scene.time.endTime)
         throw slides::InputError("command line", 0, "--dt", "is longer than the end time");
@@ -79,6 +86,7 @@ int run(const Options& options) {
     slides::Scene scene = slides::readScene(options.caseDirectory);
     applyOverrides(options, scene);
     const auto carrier = slides::makeCarrier(scene);
+    if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     omp_set_num_threads(threads);
     if (!options.quiet) describeRun(scene, *carrier, threads);
@@ -159,6 +167,9 @@ int main(int argc, char** argv) {
     app.add_option("--output", options.output, "output directory (default CASE/slides)");
     app.add_option("--end-time", options.endTime, "end time [s], overrides time.endTime");
     app.add_option("--dt", options.dt, "time step [s], overrides time.dt");
+    app.add_option(
+        "--time", options.time,
+        "OpenFOAM time directory (latestTime or a value), overrides foamFieldCoeffs.time");
     app.add_option("--threads", options.threads, "threads (default: all cores)")
         ->check(CLI::Range(1, 4096).description("a whole number from 1 to 4096"));
     app.add_option("--checkpoint-every", options.checkpointEvery,

@@ -2,13 +2,16 @@
 //
 // The one runtime-polymorphic boundary of the tracker (DESIGN.md): it is called once per batch,
 // never per particle, so the particle loops stay inlinable. Implementations: the analytic jets
-// (carrier/analytic_jet.h, carrier/round_laminar_jet.h); the OpenFOAM field reader follows.
+// (carrier/analytic_jet.h, carrier/round_laminar_jet.h) and OpenFOAM fields
+// (carrier/foam_carrier.h), which keep each particle's cell between batches (sampleFrom).
 //
 //     carrier { type analyticJet; analyticJetCoeffs { ... } }
 #pragma once
 
 #include "slides/core/vector.h"
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -52,6 +55,22 @@ public:
     /// Gas state at each point at time t. out is resized to points.size().
     virtual void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                         CarrierSample& out) const = 0;
+
+    /// Whether the carrier keeps a location per point between batches (a mesh cell): then the
+    /// caller holds one int32 per particle, −1 when unknown, and samples with sampleFrom.
+    virtual bool keepsLocations() const { return false; }
+
+    /// sample() starting each point's search at locations[i] and updating it: the cell, −1 if
+    /// unknown, or ≤ −2 for a point outside the mesh (−3 − location: the patch it left
+    /// through, −1 when not known).
+    virtual void sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations,
+                            double time, CarrierNeeds needs, CarrierSample& out) const {
+        (void)locations;
+        sample(points, time, needs, out);
+    }
+
+    /// The box the carrier's field covers, if it is bounded (a mesh).
+    virtual std::optional<Box> bounds() const { return std::nullopt; }
 
     /// Short human-readable description for the run summary, e.g. "analyticJet (axisymmetric)".
     virtual std::string describe() const = 0;

@@ -1,6 +1,7 @@
 #include "slides/carrier/make_carrier.h"
 
 #include "slides/carrier/analytic_jet.h"
+#include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/round_laminar_jet.h"
 
 namespace slides {
@@ -17,6 +18,9 @@ std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
         return std::make_unique<RoundLaminarJet>(
             scene.nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
                                                     carrier.coreLength});
+    case CarrierType::foamField:
+        return std::make_unique<FoamCarrier>(
+            scene.caseDirectory, FoamCarrierSettings{carrier.foamTime, carrier.interpolation});
     }
     throw std::logic_error("carrier type without a constructor");
 }

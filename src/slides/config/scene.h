@@ -5,6 +5,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
@@ -26,7 +27,7 @@ struct FluidSettings {
     double temperature = 0;        ///< [K]
 };
 
-enum class CarrierType { analyticJet, roundLaminarJet };
+enum class CarrierType { analyticJet, roundLaminarJet, foamField };
 
 struct CarrierSettings {
     CarrierType type = CarrierType::analyticJet;
@@ -35,6 +36,9 @@ struct CarrierSettings {
     double coreLength = 0;                           ///< unentrained core [m]
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
     std::optional<double> C1, C2, C3; ///< Eq. 5.10/5.11 coefficients when given explicitly
+    // foamField only:
+    std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
+    FoamInterpolation interpolation = FoamInterpolation::cellPoint;
 };
 
 enum class RadiusDistributionKind { fixed, normal, logNormal };
@@ -115,7 +119,8 @@ struct Scene {
     PhysicsSettings physics;
     TimeSettings time;
     std::vector<PlaneSurface> surfaces;
-    Box domain; ///< particles leaving this box have escaped
+    Box domain;                     ///< particles leaving this box have escaped
+    bool domainFromCarrier = false; ///< no domain given: the carrier's bounds (a mesh) set it
     OutputSettings output;
 };
 

@@ -1,5 +1,6 @@
 #include "slides/config/scene_keys.h"
 
+#include "slides/carrier/foam_interpolation.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
 #include "slides/physics/drag.h"
@@ -23,9 +24,10 @@ std::vector<KeyDeclaration> declareKeys() {
     // clang-format off
     std::vector<KeyDeclaration> keys = {
         {"carrier", K::dictionary, "-", "", {}, R::any, "The carrier gas field."},
-        {"carrier.type", K::word, "-", "analyticJet", {"analyticJet", "roundLaminarJet"}, R::any,
+        {"carrier.type", K::word, "-", "analyticJet", {"analyticJet", "roundLaminarJet", "foamField"},
+         R::any,
          "analyticJet: sech² jet of Eq. 5.10/5.11; roundLaminarJet: Schlichting's exact round "
-         "laminar jet."},
+         "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present)."},
         {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
         {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
@@ -54,6 +56,13 @@ std::vector<KeyDeclaration> declareKeys() {
          "Length of the unentrained core after the nozzle."},
         {"carrier.roundLaminarJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
          R::positive, "Viscosity that sets the spreading rate; default fluid.kinematicViscosity."},
+        {"carrier.foamFieldCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "OpenFOAM fields of the case: constant/polyMesh and one time directory."},
+        {"carrier.foamFieldCoeffs.time", K::word, "-", "latestTime", {}, R::any,
+         "Time directory: latestTime or a time value (the command line's --time overrides it)."},
+        {"carrier.foamFieldCoeffs.interpolation", K::word, "-", "cellPoint",
+         namesOf(foamInterpolationNames()), R::any,
+         "cell: the cell's value; cellPoint: point values, linear within the cell's tetrahedra."},
 
         {"fluid", K::dictionary, "-", "", {}, R::any, "Carrier gas properties."},
         {"fluid.density", K::scalar, "kg/m^3", "", {}, R::positive, "Gas density ρf."},
@@ -151,7 +160,9 @@ std::vector<KeyDeclaration> declareKeys() {
         {"surfaces.*.material.surfaceEnergy", K::scalar, "J/m^2", "-", {}, R::positive,
          "Surface energy γ."},
 
-        {"domain", K::dictionary, "-", "", {}, R::any, "Particles leaving this box escape."},
+        {"domain", K::dictionary, "-", "-", {}, R::any,
+         "Particles leaving this box escape; required for an analytic carrier, the mesh's box "
+         "by default for foamField."},
         {"domain.min", K::vector, "m", "", {}, R::any, "Lower corner."},
         {"domain.max", K::vector, "m", "", {}, R::any, "Upper corner."},
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 
@@ -52,6 +53,19 @@ public:
     Vec3 vector(const std::string& path) const {
         return read(
             path, [](const Dictionary& d, const std::string& key) { return Vec3(d.vector(key)); });
+    }
+
+    /// A word or a number, as written (a number printed with full precision).
+    std::string wordOrNumber(const std::string& path) const {
+        return read(path, [](const Dictionary& d, const std::string& key) {
+            const DictEntry* entry = d.find(key);
+            if (entry && entry->items.size() == 1 && entry->items[0].isNumber()) {
+                char text[32];
+                std::snprintf(text, sizeof text, "%.17g", entry->items[0].number());
+                return std::string(text);
+            }
+            return d.word(key);
+        });
     }
 
     /// A vector normalised to unit length; a zero vector is an error.
@@ -256,7 +270,14 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     CarrierSettings carrier;
     const std::string type = keys.word("carrier.type");
     const std::string coeffs = "carrier." + type + "Coeffs";
-    keys.require(coeffs, "for carrier type " + type);
+    if (type != "foamField") keys.require(coeffs, "for carrier type " + type);
+    if (type == "foamField") {
+        carrier.type = CarrierType::foamField;
+        carrier.foamTime = keys.wordOrNumber(coeffs + ".time");
+        carrier.interpolation =
+            *valueNamed(foamInterpolationNames(), keys.word(coeffs + ".interpolation"));
+        return carrier;
+    }
     carrier.type = type == "analyticJet" ? CarrierType::analyticJet : CarrierType::roundLaminarJet;
     carrier.nozzleVelocity = keys.scalar(coeffs + ".nozzleVelocity");
     carrier.coreLength = keys.scalar(coeffs + ".coreLength");
@@ -278,6 +299,18 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
                                           std::to_string(*carrier.C1 / (3 * *carrier.C3)));
     }
     return carrier;
+}
+
+/// The escape box, and the nozzle inside it.
+void readDomain(const KeyReader& keys, Scene& scene) {
+    scene.domain.min = keys.vector("domain.min");
+    scene.domain.max = keys.vector("domain.max");
+    if (!(scene.domain.min.array() < scene.domain.max.array()).all())
+        keys.fail("domain.max", "must exceed domain.min in every component");
+    const Vec3& nozzle = scene.nozzle.centre;
+    if (!((nozzle.array() > scene.domain.min.array()).all() &&
+          (nozzle.array() < scene.domain.max.array()).all()))
+        keys.fail("nozzle.centre", "lies outside the domain box");
 }
 
 } // namespace
@@ -354,14 +387,10 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         scene.surfaces.push_back(plane);
     }
 
-    scene.domain.min = keys.vector("domain.min");
-    scene.domain.max = keys.vector("domain.max");
-    if (!(scene.domain.min.array() < scene.domain.max.array()).all())
-        keys.fail("domain.max", "must exceed domain.min in every component");
-    const Vec3& nozzle = scene.nozzle.centre;
-    if (!((nozzle.array() > scene.domain.min.array()).all() &&
-          (nozzle.array() < scene.domain.max.array()).all()))
-        keys.fail("nozzle.centre", "lies outside the domain box");
+    scene.domainFromCarrier = !keys.has("domain");
+    if (scene.carrier.type != CarrierType::foamField)
+        keys.require("domain", "for an analytic carrier");
+    if (!scene.domainFromCarrier) readDomain(keys, scene);
 
     scene.output.interval = keys.scalar("output.interval");
     scene.output.carrierResolution = keys.integerTriple("output.carrierResolution");

@@ -10,7 +10,7 @@
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
 //   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
-//      domain box has escaped; both leave the cloud.
+//      domain box, or the carrier's mesh, has escaped; both leave the cloud.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
 // so results are identical for any thread count. A non-finite position or velocity stops the
 // run with an error naming the particle, instead of propagating.
@@ -63,6 +63,9 @@ public:
 private:
     void advance(double h);
     void meetSurfaces(double h);
+    /// The carrier at points, from and updating their locations when the carrier keeps them.
+    void sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
+                       double time, CarrierSample& out) const;
 
     const Scene& scene_;
     const CarrierField& carrier_;
@@ -84,6 +87,9 @@ private:
     std::vector<Vec3> startVelocities_;
     std::vector<Vec3> midpointPositions_;
     std::vector<Vec3> midpointVelocities_;
+    // A mesh carrier's location (cell) of each particle and of its midpoint; empty otherwise.
+    std::vector<std::int32_t> locations_;
+    std::vector<std::int32_t> midpointLocations_;
 };
 
 } // namespace slides

@@ -71,12 +71,14 @@ nlohmann::json sceneSettings(const Scene& scene) {
                           {"radius", scene.nozzle.radius},
                           {"crossSpanDirection", vec(scene.nozzle.crossSpanDirection)}};
     const CarrierSettings& carrier = scene.carrier;
-    settings["carrier"] = {
-        {"type", carrier.type == CarrierType::analyticJet ? "analyticJet" : "roundLaminarJet"},
-        {"profile", jetGeometryName(carrier.profile)},
-        {"nozzleVelocity", carrier.nozzleVelocity},
-        {"coreLength", carrier.coreLength},
-        {"viscosity", carrier.viscosity}};
+    settings["carrier"] = {{"type", carrier.type == CarrierType::analyticJet ? "analyticJet"
+                                    : carrier.type == CarrierType::roundLaminarJet
+                                        ? "roundLaminarJet"
+                                        : "foamField"},
+                           {"profile", jetGeometryName(carrier.profile)},
+                           {"nozzleVelocity", carrier.nozzleVelocity},
+                           {"coreLength", carrier.coreLength},
+                           {"viscosity", carrier.viscosity}};
     const RadiusDistribution& radius = scene.particles.radius;
     const char* radiusKinds[] = {"fixed", "normal", "logNormal"};
     settings["particles"] = {

@@ -1,0 +1,197 @@
+#include "slides/carrier/foam_carrier.h"
+
+#include "slides/carrier/foam_file.h"
+#include "slides/core/error.h"
+#include "slides/core/name_table.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdio>
+
+namespace slides {
+
+namespace {
+
+Vec3 patchNormal(const FoamMesh& mesh, const FoamPatch& patch) {
+    Vec3 sum = Vec3::Zero();
+    for (int f = patch.start; f < patch.start + patch.size; ++f) sum += mesh.faceAreas[f];
+    return sum.normalized();
+}
+
+std::optional<WedgeFrame> findWedge(const FoamMesh& mesh, const std::string& file) {
+    std::vector<const FoamPatch*> wedges;
+    for (const auto& patch : mesh.patches)
+        if (patch.type == PatchType::wedge && patch.size > 0) wedges.push_back(&patch);
+    if (wedges.empty()) return std::nullopt;
+    if (wedges.size() != 2)
+        throw InputError(file, 0, "",
+                         "an axisymmetric mesh needs exactly two wedge patches, found " +
+                             std::to_string(wedges.size()));
+    const Vec3 n1 = patchNormal(mesh, *wedges[0]), n2 = patchNormal(mesh, *wedges[1]);
+    WedgeFrame frame;
+    frame.axis = n1.cross(n2);
+    if (!(frame.axis.norm() > 1e-8))
+        throw InputError(file, 0, "", "the wedge patches are parallel: no axis");
+    frame.axis.normalize();
+    // The axis: where the two wedge planes meet (the point of it nearest the origin).
+    Mat3 planes;
+    planes << n1.transpose(), n2.transpose(), frame.axis.transpose();
+    const Vec3 offsets(n1.dot(mesh.faceCentres[wedges[0]->start]),
+                       n2.dot(mesh.faceCentres[wedges[1]->start]), 0.0);
+    frame.origin = planes.inverse() * offsets;
+    const Vec3 centrePlaneNormal = (n1 - n2).normalized();
+    frame.radial = frame.axis.cross(centrePlaneNormal).normalized();
+    Vec3 centroid = Vec3::Zero();
+    for (const Vec3& centre : mesh.cellCentres) centroid += centre;
+    centroid /= static_cast<double>(mesh.cellCount);
+    if ((centroid - frame.origin).dot(frame.radial) < 0) frame.radial = -frame.radial;
+    return frame;
+}
+
+} // namespace
+
+Vec3 WedgeFrame::toWedge(const Vec3& x, Mat3& rotation) const {
+    const Vec3 d = x - origin;
+    const double axial = d.dot(axis);
+    const Vec3 across = d - axial * axis;
+    const double radius = across.norm();
+    rotation.setIdentity();
+    if (radius > 0) {
+        const Vec3 direction = across / radius;
+        const double angle = std::atan2(axis.dot(radial.cross(direction)), radial.dot(direction));
+        rotation = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+    }
+    return origin + axial * axis + radius * radial;
+}
+
+FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrierSettings settings)
+    : timeDirectory_(foamTimeDirectory(caseDirectory, settings.time)), settings_(settings),
+      mesh_(readFoamMesh(caseDirectory)) {
+    const std::string meshFile = (caseDirectory / "constant" / "polyMesh" / "boundary").string();
+    if (mesh_.cellCount == 0) throw InputError(meshFile, 0, "", "the mesh has no cells");
+    locator_ = std::make_unique<FoamLocator>(mesh_);
+    wedge_ = findWedge(mesh_, meshFile);
+    for (const auto& patch : mesh_.patches)
+        if (!wedge_ && patch.type == PatchType::empty && patch.size > 0 && !emptyNormal_)
+            emptyNormal_ = mesh_.faceAreas[patch.start].normalized();
+
+    const PointWeights weights(mesh_);
+    velocity_ = std::make_unique<InterpolableField<Vec3>>(
+        readFoamVolField<Vec3>(timeDirectory_, "U", mesh_), mesh_, weights);
+    const auto optionalScalar =
+        [&](const std::string& name) -> std::unique_ptr<InterpolableField<double>> {
+        if (!FoamFile::exists(timeDirectory_ / name)) return nullptr;
+        return std::make_unique<InterpolableField<double>>(
+            readFoamVolField<double>(timeDirectory_, name, mesh_), mesh_, weights);
+    };
+    k_ = optionalScalar("k");
+    epsilon_ = optionalScalar("epsilon");
+    temperature_ = optionalScalar("T");
+    if (settings_.interpolation == FoamInterpolation::cell)
+        cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
+}
+
+Mat3 FoamCarrier::wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity,
+                                    const Vec3& x) const {
+    if (!wedge_) return gradient;
+    // Axisymmetric field in cylindrical coordinates: ∂U/∂(rθ) = (u_r/r) e_θ − (u_θ/r) e_r, a
+    // column the one cell thick wedge cannot resolve; it replaces the tetrahedron's e_θ column.
+    const double radius = (x - wedge_->origin).dot(wedge_->radial);
+    if (!(radius > 0)) return gradient;
+    const Vec3 hoop = wedge_->axis.cross(wedge_->radial);
+    const Vec3 column =
+        (velocity.dot(wedge_->radial) * hoop - velocity.dot(hoop) * wedge_->radial) / radius;
+    return gradient - (gradient * hoop) * hoop.transpose() + column * hoop.transpose();
+}
+
+void FoamCarrier::missing(const std::string& field) const {
+    throw InputError((timeDirectory_ / field).string(), 0, "",
+                     "missing field " + field + ", needed by the chosen physics");
+}
+
+void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs,
+                           CarrierSample& out, std::size_t i) const {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 x = point;
+    if (wedge_) x = wedge_->toWedge(point, rotation);
+    if (emptyNormal_) x -= (x - mesh_.cellCentres[0]).dot(*emptyNormal_) * *emptyNormal_;
+    const TetLocation at = locator_->locate(x, location);
+    if (!at.found()) {
+        location = -3 - at.exitPatch; // ≤ −2: outside, through patch −3 − location if ≥ 0
+        out.velocity[i].setZero();
+        if (needs.velocityGradient) out.velocityGradient[i].setZero();
+        if (needs.turbulence) out.turbulentKineticEnergy[i] = out.dissipationRate[i] = 0;
+        if (needs.temperature) out.temperature[i] = 0;
+        return;
+    }
+    location = at.cell;
+    const bool cellScheme = settings_.interpolation == FoamInterpolation::cell;
+    const auto value = [&](const auto& field) {
+        return cellScheme ? field.cells[at.cell] : field.value(mesh_, at);
+    };
+    out.velocity[i] = rotation * value(*velocity_);
+    if (needs.velocityGradient) {
+        const Mat3 gradient =
+            cellScheme ? cellGradients_[at.cell] : tetGradient(mesh_, *locator_, *velocity_, at);
+        out.velocityGradient[i] =
+            rotation * wedgeHoopGradient(gradient, value(*velocity_), x) * rotation.transpose();
+    }
+    if (needs.turbulence) {
+        out.turbulentKineticEnergy[i] = value(*k_);
+        out.dissipationRate[i] = value(*epsilon_);
+    }
+    if (needs.temperature) out.temperature[i] = value(*temperature_);
+}
+
+void FoamCarrier::sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
+                         CarrierSample& out) const {
+    std::vector<std::int32_t> locations(points.size(), -1);
+    FoamCarrier::sampleFrom(points, locations, time, needs, out);
+}
+
+void FoamCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations,
+                             double, CarrierNeeds needs, CarrierSample& out) const {
+    if (needs.turbulence && !k_) missing("k");
+    if (needs.turbulence && !epsilon_) missing("epsilon");
+    if (needs.temperature && !temperature_) missing("T");
+    out.resize(points.size(), needs);
+    const auto count = static_cast<std::ptrdiff_t>(points.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < count; ++i)
+        sampleAt(points[i], locations[i], needs, out, static_cast<std::size_t>(i));
+}
+
+std::optional<Box> FoamCarrier::bounds() const {
+    Box box{mesh_.boundsMin, mesh_.boundsMax};
+    if (wedge_) { // the wedge swept about its axis
+        double lowest = INFINITY, highest = -INFINITY, radius = 0;
+        for (const Vec3& point : mesh_.points) {
+            const Vec3 d = point - wedge_->origin;
+            const double axial = d.dot(wedge_->axis);
+            lowest = std::min(lowest, axial);
+            highest = std::max(highest, axial);
+            radius = std::max(radius, (d - axial * wedge_->axis).norm());
+        }
+        const Vec3 a = wedge_->origin + lowest * wedge_->axis;
+        const Vec3 b = wedge_->origin + highest * wedge_->axis;
+        for (int j = 0; j < 3; ++j) {
+            const double reach =
+                radius * std::sqrt(std::max(0.0, 1 - wedge_->axis[j] * wedge_->axis[j]));
+            box.min[j] = std::min(a[j], b[j]) - reach;
+            box.max[j] = std::max(a[j], b[j]) + reach;
+        }
+    }
+    return box;
+}
+
+std::string FoamCarrier::describe() const {
+    std::string text = "foamField " + timeDirectory_.string() + " (" +
+                       std::to_string(mesh_.cellCount) + " cells, " +
+                       std::string(nameOf(foamInterpolationNames(), settings_.interpolation));
+    if (wedge_) text += ", axisymmetric wedge";
+    if (emptyNormal_) text += ", 2-D";
+    return text + ")";
+}
+
+} // namespace slides

@@ -1,0 +1,75 @@
+// FoamCarrier: the gas field of an OpenFOAM case (U; k, ε and T when present) at particles.
+//
+// Reads constant/polyMesh and the fields of one time directory (carrier/foam_mesh.h,
+// carrier/foam_field.h), locates each point (carrier/foam_locator.h) once per batch, then
+// interpolates every field with the same weights (carrier/foam_interpolation.h), as preCICE
+// computes a mapping once and applies it to each field. A wedge mesh (axisymmetric case) is
+// tracked in 3-D: a point maps to the wedge's centre plane by its axial coordinate and radius,
+// and the sampled U and ∇U are rotated back about the axis (∇U with its hoop column u_r/r,
+// which a wedge one cell thick cannot resolve). A 2-D mesh (empty patches) is
+// sampled on its mid plane. Points outside the mesh see still gas; sampleFrom marks them with the
+// patch they left through, and the stepper counts them as escaped.
+//
+//     carrier { type foamField; foamFieldCoeffs { time latestTime; interpolation cellPoint; } }
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/carrier/foam_interpolation.h"
+
+#include <memory>
+#include <optional>
+
+namespace slides {
+
+struct FoamCarrierSettings {
+    std::string time = "latestTime"; ///< time directory: latestTime or a time value
+    FoamInterpolation interpolation = FoamInterpolation::cellPoint;
+};
+
+/// A wedge's axis and centre plane: maps 3-D points to the wedge and rotates results back.
+struct WedgeFrame {
+    Vec3 origin = Vec3::Zero(); ///< a point on the axis
+    Vec3 axis = Vec3::UnitX();
+    Vec3 radial = Vec3::UnitY(); ///< in the centre plane, away from the axis into the mesh
+
+    /// The point of the centre plane with x's axial coordinate and radius, and the rotation
+    /// about the axis that takes that point back to x.
+    Vec3 toWedge(const Vec3& x, Mat3& rotation) const;
+};
+
+class FoamCarrier : public CarrierField {
+public:
+    FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrierSettings settings);
+
+    void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
+                CarrierSample& out) const override;
+    bool keepsLocations() const override { return true; }
+    void sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations, double time,
+                    CarrierNeeds needs, CarrierSample& out) const override;
+    std::string describe() const override;
+
+    const FoamMesh& mesh() const { return mesh_; }
+    const FoamLocator& locator() const { return *locator_; }
+    const std::optional<WedgeFrame>& wedge() const { return wedge_; }
+    /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
+    std::optional<Box> bounds() const override;
+
+private:
+    void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
+                  std::size_t index) const;
+    /// The gradient at wedge point x with the hoop column of an axisymmetric field.
+    Mat3 wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity, const Vec3& x) const;
+    [[noreturn]] void missing(const std::string& field) const;
+
+    std::filesystem::path timeDirectory_;
+    FoamCarrierSettings settings_;
+    FoamMesh mesh_;
+    std::unique_ptr<FoamLocator> locator_;
+    std::optional<WedgeFrame> wedge_;
+    std::optional<Vec3> emptyNormal_; ///< 2-D mesh: sampled on the plane of the cell centres
+    std::unique_ptr<InterpolableField<Vec3>> velocity_;
+    std::unique_ptr<InterpolableField<double>> k_, epsilon_, temperature_;
+    std::vector<Mat3> cellGradients_; ///< cell scheme only
+};
+
+} // namespace slides

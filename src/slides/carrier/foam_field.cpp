@@ -1,0 +1,138 @@
+#include "slides/carrier/foam_field.h"
+
+#include "slides/carrier/foam_file.h"
+#include "slides/core/error.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <regex>
+
+namespace slides {
+
+namespace {
+
+template <typename T> struct FieldTraits;
+template <> struct FieldTraits<double> {
+    static constexpr const char* className = "volScalarField";
+    static constexpr const char* listType = "List<scalar>";
+};
+template <> struct FieldTraits<Vec3> {
+    static constexpr const char* className = "volVectorField";
+    static constexpr const char* listType = "List<vector>";
+};
+
+template <typename T> T element(FoamFile& in);
+template <> double element<double>(FoamFile& in) { return in.scalar(); }
+template <> Vec3 element<Vec3>(FoamFile& in) { return in.vector(); }
+
+/// `uniform v` or `nonuniform List<T> N (...)` of count values, then ';'.
+template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
+    const std::string kind = in.word();
+    std::vector<T> values;
+    if (kind == "uniform") {
+        values.assign(static_cast<std::size_t>(count), element<T>(in));
+    } else if (kind == "nonuniform") {
+        const std::string type = in.word();
+        if (type != FieldTraits<T>::listType)
+            in.fail("expected " + std::string(FieldTraits<T>::listType) + ", found '" + type + "'");
+        values = in.list<T>(count);
+    } else {
+        in.fail("bad token '" + kind + "': expected uniform or nonuniform");
+    }
+    in.expect(';');
+    return values;
+}
+
+} // namespace
+
+template <typename T>
+FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
+                                 const std::string& name, const FoamMesh& mesh) {
+    FoamFile in(timeDirectory / name);
+    FoamVolField<T> field;
+    field.file = in.name();
+    if (in.className() != FieldTraits<T>::className)
+        in.fail("class " + in.className() + ", expected " + FieldTraits<T>::className);
+    field.patchValues.resize(mesh.patches.size());
+    bool hasInternal = false;
+    while (!in.atEnd()) {
+        const std::string key = in.word();
+        if (key == "internalField") {
+            field.cells = readValues<T>(in, mesh.cellCount);
+            hasInternal = true;
+        } else if (key == "boundaryField") {
+            in.expect('{');
+            while (in.peek() != '}') {
+                // A patch by name, or a quoted regular expression for the patches without a
+                // value yet (OpenFOAM: an exact name wins over a pattern).
+                const bool pattern = in.peek() == '"';
+                const std::string name = pattern ? in.quoted() : in.word();
+                const std::regex expression(pattern ? name : std::string("^$"));
+                std::vector<std::size_t> patches;
+                for (std::size_t p = 0; p < mesh.patches.size(); ++p)
+                    if (pattern ? std::regex_match(mesh.patches[p].name, expression) &&
+                                      field.patchValues[p].empty()
+                                : mesh.patches[p].name == name)
+                        patches.push_back(p);
+                in.expect('{');
+                while (in.peek() != '}') {
+                    const std::string entry = in.word();
+                    if (entry == "value" && !patches.empty()) {
+                        const auto values = readValues<T>(in, mesh.patches[patches[0]].size);
+                        for (const std::size_t p : patches)
+                            field.patchValues[p] =
+                                values.size() == static_cast<std::size_t>(mesh.patches[p].size)
+                                    ? values
+                                    : std::vector<T>(mesh.patches[p].size, values.at(0));
+                    } else {
+                        in.skipValue();
+                    }
+                }
+                in.expect('}');
+            }
+            in.expect('}');
+        } else {
+            in.skipValue();
+        }
+    }
+    if (!hasInternal) in.fail("no internalField");
+    return field;
+}
+
+template FoamVolField<double> readFoamVolField<double>(const std::filesystem::path&,
+                                                       const std::string&, const FoamMesh&);
+template FoamVolField<Vec3> readFoamVolField<Vec3>(const std::filesystem::path&, const std::string&,
+                                                   const FoamMesh&);
+
+std::filesystem::path foamTimeDirectory(const std::filesystem::path& caseDirectory,
+                                        const std::string& time) {
+    const bool latest = time == "latestTime";
+    char* end = nullptr;
+    const double wanted = latest ? 0.0 : std::strtod(time.c_str(), &end);
+    if (!latest && (end == time.c_str() || *end))
+        throw InputError(caseDirectory.string(), 0, "time",
+                         "'" + time + "' is neither latestTime nor a time value");
+    std::optional<std::filesystem::path> best;
+    double bestTime = -INFINITY;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(caseDirectory, error)) {
+        if (!entry.is_directory()) continue;
+        const std::string name = entry.path().filename().string();
+        const double value = std::strtod(name.c_str(), &end);
+        if (end == name.c_str() || *end) continue;
+        if (latest && value > bestTime && FoamFile::exists(entry.path() / "U")) {
+            best = entry.path();
+            bestTime = value;
+        }
+        if (!latest && std::abs(value - wanted) <= 1e-12 * std::max(1.0, std::abs(wanted)))
+            best = entry.path();
+    }
+    if (!best)
+        throw InputError(caseDirectory.string(), 0, "time",
+                         latest ? "no time directory holds a field U (run the case's Allrun first)"
+                                : "no time directory " + time);
+    return *best;
+}
+
+} // namespace slides

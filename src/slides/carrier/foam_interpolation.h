@@ -1,0 +1,73 @@
+// Interpolation of cell-centred OpenFOAM fields to points located by FoamLocator.
+//
+// cell: the value of the cell holding the point, and a gradient that is the volume average of
+// the cellPoint gradients over the cell's tetrahedra. cellPoint (OpenFOAM's
+// interpolationCellPoint): values at the mesh points from the surrounding cell values and the
+// boundary face values, then linear (barycentric) within the tetrahedron; the gradient is the
+// tetrahedron's constant gradient. Point values come from an inverse-distance-squared weighted
+// least-squares linear fit about the point (OpenFOAM's volPointInterpolation averages with
+// inverse-distance weights, which is not exact for a linear field; the fit is, on any mesh: a
+// boundary point whose cells and faces do not fix a linear function adds the next cells).
+//
+//     carrier { type foamField; foamFieldCoeffs { interpolation cellPoint; } }
+#pragma once
+
+#include "slides/carrier/foam_field.h"
+#include "slides/carrier/foam_locator.h"
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+namespace slides {
+
+enum class FoamInterpolation { cell, cellPoint };
+
+struct FoamInterpolationName {
+    FoamInterpolation value;
+    std::string_view name;
+};
+
+/// How to add a scheme: an enumerator, its name here, its case in FoamInterpolator::value().
+inline constexpr std::array<FoamInterpolationName, 2> foamInterpolationNames() {
+    return {{{FoamInterpolation::cell, "cell"}, {FoamInterpolation::cellPoint, "cellPoint"}}};
+}
+
+/// Point weights of one mesh: point value p = Σ weight·sample, where a sample is a cell value
+/// or a boundary face value (patches of type patch and wall; a patch without a value in the
+/// field file contributes its owner cell's value, as zeroGradient).
+class PointWeights {
+public:
+    explicit PointWeights(const FoamMesh& mesh);
+
+    template <typename T> std::vector<T> pointValues(const FoamVolField<T>& field) const;
+
+private:
+    const FoamMesh& mesh_;
+    std::vector<int> offsets_; ///< samples of point p: [offsets_[p], offsets_[p+1])
+    std::vector<int> samples_; ///< cell index, or cellCount + face for a boundary face
+    std::vector<double> weights_;
+};
+
+/// One field ready to interpolate: cell values, point values, face point-average values.
+template <typename T> struct InterpolableField {
+    std::vector<T> cells;
+    std::vector<T> points;
+    std::vector<T> faceMidpoints;
+
+    InterpolableField(const FoamVolField<T>& field, const FoamMesh& mesh,
+                      const PointWeights& weights);
+
+    /// The cellPoint value at a located point.
+    T value(const FoamMesh& mesh, const TetLocation& at) const;
+};
+
+/// The constant gradient of U in tetrahedron at (cellPoint): gradient(i, j) = dU_i/dx_j.
+Mat3 tetGradient(const FoamMesh& mesh, const FoamLocator& locator,
+                 const InterpolableField<Vec3>& velocity, const TetLocation& at);
+
+/// The gradient of each cell for the cell scheme: volume average of its tetrahedra's gradients.
+std::vector<Mat3> cellGradients(const FoamMesh& mesh, const FoamLocator& locator,
+                                const InterpolableField<Vec3>& velocity);
+
+} // namespace slides

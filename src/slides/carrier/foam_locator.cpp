@@ -1,0 +1,162 @@
+#include "slides/carrier/foam_locator.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slides {
+
+std::array<double, 4> barycentricWeights(const std::array<Vec3, 4>& tet, const Vec3& point) {
+    const Vec3 e1 = tet[1] - tet[0], e2 = tet[2] - tet[0], e3 = tet[3] - tet[0];
+    const Vec3 d = point - tet[0];
+    const double det = e1.dot(e2.cross(e3));
+    if (det == 0) return {-1, -1, -1, -1}; // a flat tetrahedron holds nothing
+    const double l1 = d.dot(e2.cross(e3)) / det;
+    const double l2 = e1.dot(d.cross(e3)) / det;
+    const double l3 = e1.dot(e2.cross(d)) / det;
+    return {1 - l1 - l2 - l3, l1, l2, l3};
+}
+
+FoamLocator::FoamLocator(const FoamMesh& mesh) : mesh_(mesh) {
+    faceMidpoints_.resize(mesh.faceCount());
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+        Vec3 sum = Vec3::Zero();
+        for (const int p : mesh.pointsOf(f)) sum += mesh.points[p];
+        faceMidpoints_[f] = sum / static_cast<double>(mesh.pointsOf(f).size());
+    }
+    // About one cell per bin.
+    const Vec3 extent = (mesh.boundsMax - mesh.boundsMin).cwiseMax(1e-300);
+    const double binVolume = extent.prod() / std::max(1, mesh.cellCount);
+    const double side = std::cbrt(binVolume);
+    for (int axis = 0; axis < 3; ++axis)
+        bins_[axis] = std::clamp(static_cast<int>(extent[axis] / side), 1, 512);
+    gridOrigin_ = mesh.boundsMin;
+    for (int axis = 0; axis < 3; ++axis) binSize_[axis] = extent[axis] / bins_[axis];
+    const auto binOf = [&](const Vec3& x, int axis) {
+        return std::clamp(static_cast<int>((x[axis] - gridOrigin_[axis]) / binSize_[axis]), 0,
+                          bins_[axis] - 1);
+    };
+    std::vector<std::array<int, 6>> ranges(mesh.cellCount);
+    std::vector<int> count(static_cast<std::size_t>(bins_[0]) * bins_[1] * bins_[2] + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int c = 0; c < mesh.cellCount; ++c) {
+            auto& range = ranges[c];
+            if (pass == 0) {
+                Vec3 low = mesh.cellCentres[c], high = low;
+                for (const int f : mesh.facesOf(c))
+                    for (const int p : mesh.pointsOf(f)) {
+                        low = low.cwiseMin(mesh.points[p]);
+                        high = high.cwiseMax(mesh.points[p]);
+                    }
+                for (int axis = 0; axis < 3; ++axis) {
+                    range[axis] = binOf(low, axis);
+                    range[3 + axis] = binOf(high, axis);
+                }
+            }
+            for (int i = range[0]; i <= range[3]; ++i)
+                for (int j = range[1]; j <= range[4]; ++j)
+                    for (int k = range[2]; k <= range[5]; ++k) {
+                        const int bin = (i * bins_[1] + j) * bins_[2] + k;
+                        if (pass == 0)
+                            ++count[bin + 1];
+                        else
+                            binCells_[binOffsets_[bin] + count[bin]++] = c;
+                    }
+        }
+        if (pass == 0) {
+            binOffsets_.assign(count.size(), 0);
+            for (std::size_t b = 1; b < count.size(); ++b)
+                binOffsets_[b] = binOffsets_[b - 1] + count[b];
+            binCells_.assign(binOffsets_.back(), 0);
+            std::fill(count.begin(), count.end(), 0);
+        }
+    }
+}
+
+std::array<Vec3, 4> FoamLocator::vertices(int cell, int face, int edge) const {
+    const auto ring = mesh_.pointsOf(face);
+    const int n = static_cast<int>(ring.size());
+    return {mesh_.cellCentres[cell], faceMidpoints_[face], mesh_.points[ring[edge]],
+            mesh_.points[ring[(edge + 1) % n]]};
+}
+
+std::optional<TetLocation> FoamLocator::locateInCell(const Vec3& point, int cell) const {
+    for (const int face : mesh_.facesOf(cell)) {
+        const int n = static_cast<int>(mesh_.pointsOf(face).size());
+        for (int edge = 0; edge < n; ++edge) {
+            const auto weights = barycentricWeights(vertices(cell, face, edge), point);
+            if (*std::min_element(weights.begin(), weights.end()) >= -tolerance)
+                return TetLocation{cell, face, edge, weights, -1};
+        }
+    }
+    return std::nullopt;
+}
+
+TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
+    TetLocation outside;
+    const Vec3 slack = 1e-9 * (mesh_.boundsMax - mesh_.boundsMin); // points on the boundary
+    for (int axis = 0; axis < 3; ++axis)
+        if (point[axis] < mesh_.boundsMin[axis] - slack[axis] ||
+            point[axis] > mesh_.boundsMax[axis] + slack[axis])
+            return outside;
+    std::array<int, 3> index{};
+    for (int axis = 0; axis < 3; ++axis)
+        index[axis] =
+            std::clamp(static_cast<int>((point[axis] - gridOrigin_[axis]) / binSize_[axis]), 0,
+                       bins_[axis] - 1);
+    const int bin = (index[0] * bins_[1] + index[1]) * bins_[2] + index[2];
+    for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k)
+        if (auto found = locateInCell(point, binCells_[k])) return *found;
+    return outside;
+}
+
+TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
+    if (startCell < 0 || startCell >= mesh_.cellCount) return locateGlobally(point);
+    int cell = startCell, face = mesh_.facesOf(cell)[0], edge = 0;
+    // A walk longer than this is cycling on a badly shaped mesh: search instead.
+    const int maximumSteps = 1000;
+    for (int step = 0; step < maximumSteps; ++step) {
+        const auto weights = barycentricWeights(vertices(cell, face, edge), point);
+        const int k =
+            static_cast<int>(std::min_element(weights.begin(), weights.end()) - weights.begin());
+        if (weights[k] >= -tolerance) return TetLocation{cell, face, edge, weights, -1};
+        const auto ring = mesh_.pointsOf(face);
+        const int n = static_cast<int>(ring.size());
+        switch (k) {
+        case 0: { // across the mesh face into the next cell
+            const int next = mesh_.across(face, cell);
+            if (next < 0) {
+                TetLocation searched = locateGlobally(point);
+                if (!searched.found()) searched.exitPatch = mesh_.facePatch[face];
+                return searched;
+            }
+            cell = next;
+            break;
+        }
+        case 1: { // across the triangle (centre, p_edge, p_edge+1) to the cell's other face
+            const int a = ring[edge], b = ring[(edge + 1) % n];
+            bool moved = false;
+            for (const int other : mesh_.facesOf(cell)) {
+                if (other == face) continue;
+                const auto otherRing = mesh_.pointsOf(other);
+                const int m = static_cast<int>(otherRing.size());
+                for (int j = 0; j < m && !moved; ++j) {
+                    const int p = otherRing[j], q = otherRing[(j + 1) % m];
+                    if ((p == a && q == b) || (p == b && q == a)) {
+                        face = other;
+                        edge = j;
+                        moved = true;
+                    }
+                }
+                if (moved) break;
+            }
+            if (!moved) return locateGlobally(point); // an open cell: let the search decide
+            break;
+        }
+        case 2: edge = (edge + 1) % n; break;      // across (centre, midpoint, p_edge+1)
+        default: edge = (edge + n - 1) % n; break; // across (centre, midpoint, p_edge)
+        }
+    }
+    return locateGlobally(point);
+}
+
+} // namespace slides

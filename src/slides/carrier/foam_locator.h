@@ -1,0 +1,66 @@
+// FoamLocator: the cell and tetrahedron of a polyhedral mesh holding a point.
+//
+// Each cell is split into tetrahedra (cell centre, face point-average, two consecutive face
+// points), as OpenFOAM's tetDecomposition splits it about the cell centre; neighbouring cells
+// share the face triangles, so the tetrahedra tile the mesh. locate() walks from a start cell
+// across the tetrahedron face opposite the most negative barycentric weight (a visibility
+// walk: O(1) per particle step when the start is the particle's previous cell); without a start,
+// or when the walk reaches the boundary, a uniform bin grid over the cells' bounding boxes
+// finds the cell. A point in no cell is outside, with the patch the walk left through.
+//
+//     FoamLocator locator(mesh);  TetLocation at = locator.locate(x, previousCell);
+#pragma once
+
+#include "slides/carrier/foam_mesh.h"
+
+#include <array>
+#include <optional>
+
+namespace slides {
+
+/// A point inside tetrahedron (cell, face, edge) with barycentric weights of its vertices
+/// (cell centre, face point-average, face point edge, face point edge + 1); cell −1 when the
+/// point is outside the mesh, then exitPatch is the patch the search left through (or −1).
+struct TetLocation {
+    int cell = -1;
+    int face = -1;
+    int edge = 0;
+    std::array<double, 4> weights{};
+    int exitPatch = -1;
+
+    bool found() const { return cell >= 0; }
+};
+
+class FoamLocator {
+public:
+    explicit FoamLocator(const FoamMesh& mesh);
+
+    /// The location of point, walking from startCell (a global search when startCell < 0).
+    TetLocation locate(const Vec3& point, int startCell) const;
+    /// The location of point by the bin grid (first cell that holds it), or outside.
+    TetLocation locateGlobally(const Vec3& point) const;
+    /// The location of point within cell, if the cell holds it (weights ≥ −tolerance).
+    std::optional<TetLocation> locateInCell(const Vec3& point, int cell) const;
+
+    /// Vertices of tetrahedron (cell, face, edge) in weight order.
+    std::array<Vec3, 4> vertices(int cell, int face, int edge) const;
+    const Vec3& faceMidpoint(int face) const { return faceMidpoints_[face]; }
+
+    /// Barycentric weights below −tolerance mean outside (relative to the tetrahedron).
+    static constexpr double tolerance = 1e-10;
+
+private:
+    const FoamMesh& mesh_;
+    std::vector<Vec3> faceMidpoints_; ///< point average of each face
+    // Bin grid: cells whose bounding box overlaps bin b are binCells[binOffsets[b] ..].
+    Vec3 gridOrigin_ = Vec3::Zero();
+    Vec3 binSize_ = Vec3::Ones();
+    std::array<int, 3> bins_{1, 1, 1};
+    std::vector<int> binOffsets_;
+    std::vector<int> binCells_;
+};
+
+/// Barycentric weights of point in the tetrahedron with the given vertices.
+std::array<double, 4> barycentricWeights(const std::array<Vec3, 4>& tet, const Vec3& point);
+
+} // namespace slides

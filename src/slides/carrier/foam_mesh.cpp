@@ -1,0 +1,181 @@
+#include "slides/carrier/foam_mesh.h"
+
+#include "slides/carrier/foam_file.h"
+#include "slides/core/error.h"
+
+#include <algorithm>
+
+namespace slides {
+
+namespace {
+
+PatchType patchTypeNamed(const std::string& type) {
+    if (type == "wall") return PatchType::wall;
+    if (type == "symmetry" || type == "symmetryPlane") return PatchType::symmetry;
+    if (type == "wedge") return PatchType::wedge;
+    if (type == "empty") return PatchType::empty;
+    return PatchType::patch; // patch and the rest (mapped, cyclic, ...) bound the domain alike
+}
+
+std::vector<FoamPatch> readBoundary(const std::filesystem::path& file) {
+    FoamFile in(file);
+    std::vector<FoamPatch> patches(static_cast<std::size_t>(in.label()));
+    in.expect('(');
+    for (FoamPatch& patch : patches) {
+        patch.name = in.word();
+        in.expect('{');
+        bool hasSize = false, hasStart = false;
+        while (in.peek() != '}') {
+            const std::string key = in.word();
+            if (key == "type") {
+                patch.type = patchTypeNamed(in.word());
+            } else if (key == "nFaces") {
+                patch.size = static_cast<int>(in.label());
+                hasSize = true;
+            } else if (key == "startFace") {
+                patch.start = static_cast<int>(in.label());
+                hasStart = true;
+            } else {
+                in.skipValue();
+                continue;
+            }
+            in.expect(';');
+        }
+        in.expect('}');
+        if (!hasSize || !hasStart) in.fail("patch " + patch.name + " lacks nFaces or startFace");
+    }
+    in.expect(')');
+    return patches;
+}
+
+std::vector<int> toInt(const std::vector<std::int64_t>& values) {
+    return {values.begin(), values.end()};
+}
+
+} // namespace
+
+FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
+    const auto dir = caseDirectory / "constant" / "polyMesh";
+    FoamMesh mesh;
+    {
+        FoamFile in(dir / "points");
+        mesh.points = in.list<Vec3>();
+    }
+    {
+        FoamFile in(dir / "faces");
+        std::vector<std::int64_t> offsets, labels;
+        in.faces(offsets, labels);
+        for (const auto point : labels)
+            if (point < 0 || point >= static_cast<std::int64_t>(mesh.points.size()))
+                in.fail("face point label " + std::to_string(point) + " outside the " +
+                        std::to_string(mesh.points.size()) + " points");
+        mesh.faceOffsets = toInt(offsets);
+        mesh.facePoints = toInt(labels);
+    }
+    const long faceCount = static_cast<long>(mesh.faceOffsets.size()) - 1;
+    {
+        FoamFile in(dir / "owner");
+        mesh.owner = toInt(in.list<std::int64_t>(faceCount));
+    }
+    {
+        FoamFile in(dir / "neighbour");
+        mesh.neighbour = toInt(in.list<std::int64_t>());
+        if (static_cast<long>(mesh.neighbour.size()) > faceCount)
+            in.fail("more neighbours than faces");
+    }
+    mesh.patches = readBoundary(dir / "boundary");
+    mesh.cellCount = 0;
+    for (const int cell : mesh.owner) mesh.cellCount = std::max(mesh.cellCount, cell + 1);
+    for (const int cell : mesh.neighbour) mesh.cellCount = std::max(mesh.cellCount, cell + 1);
+    int expectedStart = mesh.internalFaceCount();
+    for (const auto& patch : mesh.patches) {
+        if (patch.start != expectedStart || patch.size < 0)
+            throw InputError((dir / "boundary").string(), 0, patch.name,
+                             "startFace " + std::to_string(patch.start) + " should be " +
+                                 std::to_string(expectedStart));
+        expectedStart += patch.size;
+    }
+    if (expectedStart != faceCount)
+        throw InputError((dir / "boundary").string(), 0, "",
+                         "patches end at face " + std::to_string(expectedStart) +
+                             " but the mesh has " + std::to_string(faceCount) + " faces");
+    mesh.computeGeometry();
+    return mesh;
+}
+
+void FoamMesh::computeGeometry() {
+    const int faces = faceCount();
+    faceCentres.assign(faces, Vec3::Zero());
+    faceAreas.assign(faces, Vec3::Zero());
+    for (int f = 0; f < faces; ++f) { // primitiveMeshFaceCentresAndAreas.C
+        const auto ring = pointsOf(f);
+        const std::size_t n = ring.size();
+        if (n == 3) {
+            const Vec3 &a = points[ring[0]], &b = points[ring[1]], &c = points[ring[2]];
+            faceCentres[f] = (a + b + c) / 3;
+            faceAreas[f] = 0.5 * (b - a).cross(c - a);
+            continue;
+        }
+        Vec3 estimate = Vec3::Zero();
+        for (const int p : ring) estimate += points[p];
+        estimate /= static_cast<double>(n);
+        Vec3 sumN = Vec3::Zero(), sumAc = Vec3::Zero();
+        double sumA = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3& here = points[ring[i]];
+            const Vec3& next = points[ring[(i + 1) % n]];
+            const Vec3 normal = (next - here).cross(estimate - here);
+            const double area = normal.norm();
+            sumN += normal;
+            sumA += area;
+            sumAc += area * (here + next + estimate);
+        }
+        faceCentres[f] = sumA > 1e-300 ? Vec3(sumAc / (3 * sumA)) : estimate;
+        faceAreas[f] = 0.5 * sumN;
+    }
+
+    std::vector<int> count(cellCount + 1, 0);
+    for (int f = 0; f < faces; ++f) {
+        ++count[owner[f] + 1];
+        if (f < internalFaceCount()) ++count[neighbour[f] + 1];
+    }
+    cellFaceOffsets.assign(cellCount + 1, 0);
+    for (int c = 0; c < cellCount; ++c) cellFaceOffsets[c + 1] = cellFaceOffsets[c] + count[c + 1];
+    cellFaces.assign(cellFaceOffsets.back(), 0);
+    std::vector<int> fill(cellFaceOffsets.begin(), cellFaceOffsets.end() - 1);
+    for (int f = 0; f < faces; ++f) {
+        cellFaces[fill[owner[f]]++] = f;
+        if (f < internalFaceCount()) cellFaces[fill[neighbour[f]]++] = f;
+    }
+
+    // primitiveMeshCellCentresAndVols.C: pyramids on the faces about the face-centre average.
+    cellCentres.assign(cellCount, Vec3::Zero());
+    cellVolumes.assign(cellCount, 0.0);
+    for (int c = 0; c < cellCount; ++c) {
+        Vec3 estimate = Vec3::Zero();
+        for (const int f : facesOf(c)) estimate += faceCentres[f];
+        estimate /= static_cast<double>(facesOf(c).size());
+        Vec3 moment = Vec3::Zero();
+        double volume3 = 0;
+        for (const int f : facesOf(c)) {
+            const double sign = owner[f] == c ? 1.0 : -1.0;
+            const double pyramid3 = sign * faceAreas[f].dot(faceCentres[f] - estimate);
+            moment += pyramid3 * (0.75 * faceCentres[f] + 0.25 * estimate);
+            volume3 += pyramid3;
+        }
+        cellCentres[c] = std::abs(volume3) > 1e-300 ? Vec3(moment / volume3) : estimate;
+        cellVolumes[c] = volume3 / 3;
+    }
+
+    facePatch.assign(faces, -1);
+    for (int p = 0; p < static_cast<int>(patches.size()); ++p)
+        std::fill_n(facePatch.begin() + patches[p].start, patches[p].size, p);
+
+    boundsMin = boundsMax = points.empty() ? Vec3::Zero() : points.front();
+    for (const Vec3& point : points) {
+        boundsMin = boundsMin.cwiseMin(point);
+        boundsMax = boundsMax.cwiseMax(point);
+    }
+}
+
+} // namespace slides
