@@ -174,7 +174,8 @@ TEST_F(BadField, WrongClass) {
 
 TEST_F(BadField, UniformAndPatchValues) {
     writeField("volScalarField", "dimensions [0 2 -2 0 0 0 0];\ninternalField uniform 3.5;\n"
-                                 "boundaryField\n{\n inlet { type fixedValue; value uniform 2; }\n"
+                                 "boundaryField\n{\n #includeEtc \"caseDicts/setConstraintTypes\"\n"
+                                 " inlet { type fixedValue; value uniform 2; }\n"
                                  " outlet { type zeroGradient; }\n \"(walls|sides)\" { type "
                                  "calculated; value uniform 0; }\n}\n");
     const auto field = readFoamVolField<double>(directory_ / "0", "p", mesh_);
