@@ -44,6 +44,14 @@ template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
     return values;
 }
 
+/// The argument of a #include-like directive (a quoted path or a word).
+void skipDirectiveArgument(FoamFile& in) {
+    if (in.peek() == '"')
+        in.quoted();
+    else
+        in.word();
+}
+
 } // namespace
 
 template <typename T>
@@ -58,7 +66,9 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
     bool hasInternal = false;
     while (!in.atEnd()) {
         const std::string key = in.word();
-        if (key == "internalField") {
+        if (key[0] == '#') {
+            skipDirectiveArgument(in);
+        } else if (key == "internalField") {
             field.cells = readValues<T>(in, mesh.cellCount);
             hasInternal = true;
         } else if (key == "boundaryField") {
@@ -68,6 +78,10 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                 // value yet (OpenFOAM: an exact name wins over a pattern).
                 const bool pattern = in.peek() == '"';
                 const std::string name = pattern ? in.quoted() : in.word();
+                if (name[0] == '#') { // #includeEtc "caseDicts/setConstraintTypes": no values
+                    skipDirectiveArgument(in);
+                    continue;
+                }
                 const std::regex expression(pattern ? name : std::string("^$"));
                 std::vector<std::size_t> patches;
                 for (std::size_t p = 0; p < mesh.patches.size(); ++p)
