@@ -23,6 +23,8 @@ struct ParticleCloud {
     std::vector<Vec3> position; ///< [m]
     std::vector<Vec3> velocity; ///< [m/s]
     std::vector<double> radius; ///< [m]
+    /// A mesh carrier's cell of each particle (CarrierField::sampleFrom); empty otherwise.
+    std::vector<std::int32_t> carrierLocation;
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -41,6 +43,7 @@ struct ParticleCloud {
         visit("position", cloud.position);
         visit("velocity", cloud.velocity);
         visit("radius", cloud.radius);
+        visit("carrierLocation", cloud.carrierLocation);
     }
 };
 

@@ -49,7 +49,7 @@ void Stepper::step() {
     stepLengths_.assign(cloud_.size(), h);
     for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
         stepLengths_[i] = std::clamp(time_ + h - injector_.injectionTime(cloud_.id[i]), 0.0, h);
-    if (carrier_.keepsLocations()) locations_.resize(cloud_.size(), -1);
+    if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     particleSteps_ += cloud_.size();
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
@@ -87,7 +87,7 @@ void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    sampleCarrier(x, locations_, time_, gas_);
+    sampleCarrier(x, cloud_.carrierLocation, time_, gas_);
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
 
@@ -106,7 +106,7 @@ void Stepper::advance(double h) {
         xm = x;
         vm = v;
         advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
-        midpointLocations_ = locations_;
+        midpointLocations_ = cloud_.carrierLocation;
         sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, midpointGas_);
         advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
                     stepLengths_, 1.0);
@@ -151,16 +151,13 @@ void Stepper::meetSurfaces(double h) {
             const double arrivalTime = time_ + h - (1 - firstTouch) * stepLengths_[i];
             arrivals_.push_back({cloud_.id[i], touched, arrivalTime, x0 + firstTouch * (x - x0),
                                  v0 + firstTouch * (v - v0), cloud_.radius[i]});
-        } else if (insideBox(scene_.domain, x) && (locations_.empty() || locations_[i] >= -1)) {
+        } else if (insideBox(scene_.domain, x) &&
+                   (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1)) {
             continue; // a location below −1 left the mesh at the step's start
         } else {
             ++escaped_;
         }
         cloud_.removeAt(i); // swaps in the last particle, already handled
-        if (!locations_.empty()) {
-            locations_[i] = locations_.back();
-            locations_.pop_back();
-        }
     }
 }
 

@@ -87,9 +87,7 @@ private:
     std::vector<Vec3> startVelocities_;
     std::vector<Vec3> midpointPositions_;
     std::vector<Vec3> midpointVelocities_;
-    // A mesh carrier's location (cell) of each particle and of its midpoint; empty otherwise.
-    std::vector<std::int32_t> locations_;
-    std::vector<std::int32_t> midpointLocations_;
+    std::vector<std::int32_t> midpointLocations_; ///< a mesh carrier's cells of the midpoints
 };
 
 } // namespace slides
