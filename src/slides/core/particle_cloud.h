@@ -23,6 +23,10 @@ struct ParticleCloud {
     std::vector<Vec3> position; ///< [m]
     std::vector<Vec3> velocity; ///< [m/s]
     std::vector<double> radius; ///< [m]
+    /// Per-particle model state (history memory, spin): stateWidth doubles a particle, moved
+    /// with it; empty when no model keeps state.
+    std::vector<double> modelState;
+    std::size_t stateWidth = 0;
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }

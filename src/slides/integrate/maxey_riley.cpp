@@ -1,0 +1,126 @@
+#include "slides/integrate/maxey_riley.h"
+
+#include "slides/physics/history_kernel.h"
+#include "slides/physics/lift.h"
+#include "slides/physics/spin.h"
+
+namespace slides {
+
+bool MaxeyRileyStepper::needed(const PhysicsSettings& physics) {
+    return physics.history != HistoryModel::none || physics.addedMass || physics.pressureGradient ||
+           physics.lift != LiftModel::none || physics.spin;
+}
+
+MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
+    : scene_(scene), drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,
+                           scene.particles.density},
+      inertia_{scene.physics.addedMass, scene.physics.pressureGradient},
+      bodyAcceleration_(inertia_.bodyAcceleration(scene.physics.gravity, scene.particles.density,
+                                                  scene.fluid.density, scene.physics.buoyancy)),
+      fluidAccelerationFactor_(
+          inertia_.fluidAccelerationFactor(scene.particles.density, scene.fluid.density)) {
+    const PhysicsSettings& physics = scene.physics;
+    needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
+                              physics.lift != LiftModel::none || physics.spin;
+    width_ = 4; // age, v_{n−1}
+    if (physics.spin) {
+        spinOffset_ = width_;
+        width_ += 3;
+    }
+    if (physics.history == HistoryModel::basset) {
+        history_ =
+            WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
+        historyOffset_ = width_;
+        width_ += 6 + history_->doubles(); // s0, I_n, memory
+    }
+}
+
+void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrier, double time,
+                                const std::vector<double>& stepLengths) {
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    auto& x = cloud.position;
+    auto& v = cloud.velocity;
+    const auto stateOf = [&](std::ptrdiff_t i) {
+        return cloud.modelState.data() + static_cast<std::size_t>(i) * width_;
+    };
+    carrier.sample(x, time, needs_, gasStart_);
+    // Predicted end positions: x + h (v + ½ (v − v_{n−1})), plain x + h v on the first step.
+    predicted_.resize(cloud.size());
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const double* state = stateOf(i);
+        const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : v[i];
+        predicted_[i] = x[i] + stepLengths[i] * (v[i] + 0.5 * (v[i] - previous));
+    }
+    carrier.sample(predicted_, time + scene_.time.dt, needs_, gasEnd_);
+
+    const double fluidDensity = scene_.fluid.density;
+    const double particleDensity = scene_.particles.density;
+    const double viscosity = scene_.fluid.kinematicViscosity;
+    const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
+    const LiftModel lift = scene_.physics.lift;
+#pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        double* state = stateOf(i);
+        const double radius = cloud.radius[i];
+        const Vec3 velocity = v[i];
+        const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : velocity;
+        const Vec3 predictedVelocity = velocity + (velocity - previous);
+        const Vec3& u0 = gasStart_.velocity[i];
+        const Vec3& u1 = gasEnd_.velocity[i];
+        const Vec3 slipStart = u0 - velocity, slipEnd = u1 - predictedVelocity;
+
+        SlipStep step;
+        step.h = stepLengths[i];
+        step.gasStart = u0;
+        step.gasEnd = u1;
+        // Drag per effective mass: f(Re)/τ_e = (ρp/ρ_e) / τ, at the predicted midpoint slip.
+        step.dragRate = particleDensity / effectiveDensity /
+                        dragResponseTime(drag_, radius, 0.5 * (slipStart + slipEnd).norm());
+        step.forceStart = step.forceEnd = bodyAcceleration_;
+        if (needs_.velocityGradient) {
+            const Mat3& grad0 = gasStart_.velocityGradient[i];
+            const Mat3& grad1 = gasEnd_.velocityGradient[i];
+            step.forceStart += fluidAccelerationFactor_ * steadyFluidAcceleration(u0, grad0);
+            step.forceEnd += fluidAccelerationFactor_ * steadyFluidAcceleration(u1, grad1);
+            const Vec3 vorticity0 = vorticity(grad0), vorticity1 = vorticity(grad1);
+            Vec3 spinStart = Vec3::Zero(), spinEnd = Vec3::Zero();
+            if (scene_.physics.spin) {
+                Eigen::Map<Vec3> spin(state + spinOffset_);
+                spinStart = spin;
+                spin = relaxSpin(spin, 0.5 * (vorticity0 + vorticity1),
+                                 spinResponseTime(particleDensity, fluidDensity, viscosity, radius),
+                                 step.h);
+                spinEnd = spin;
+            }
+            if (lift != LiftModel::none) {
+                step.forceStart += liftAcceleration(lift, slipStart, vorticity0, spinStart, radius,
+                                                    viscosity, fluidDensity, effectiveDensity);
+                step.forceEnd += liftAcceleration(lift, slipEnd, vorticity1, spinEnd, radius,
+                                                  viscosity, fluidDensity, effectiveDensity);
+            }
+        }
+
+        StepResult result;
+        if (history_) {
+            step.historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity, radius,
+                                                 inertia_.addedMassCoefficient());
+            double* historyState = state + historyOffset_;
+            Eigen::Map<Vec3> startSlip(historyState), integral(historyState + 3);
+            if (state[0] == 0) startSlip = slipStart; // released now: s0 = u − v
+            HistoryStart start{startSlip, state[0], integral};
+            WindowTailHistory memory(*history_, historyState + 6);
+            result = advanceWithHistory(step, velocity, start, memory);
+            integral = start.integral;
+        } else {
+            NoHistory memory;
+            HistoryStart start;
+            result = advanceWithHistory(step, velocity, start, memory);
+        }
+        Eigen::Map<Vec3>(state + 1) = velocity;
+        state[0] += step.h;
+        x[i] += result.displacement;
+        v[i] = result.velocity;
+    }
+}
+
+} // namespace slides
