@@ -4,6 +4,9 @@
 #include "slides/physics/lift.h"
 #include "slides/physics/spin.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace slides {
 
 bool MaxeyRileyStepper::needed(const PhysicsSettings& physics) {
@@ -44,18 +47,44 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         return cloud.modelState.data() + static_cast<std::size_t>(i) * width_;
     };
     carrier.sample(x, time, needs_, gasStart_);
-    // Predicted end positions: x + h (v + ½ (v − v_{n−1})), plain x + h v on the first step.
-    predicted_.resize(cloud.size());
-    for (std::ptrdiff_t i = 0; i < count; ++i) {
-        const double* state = stateOf(i);
-        const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : v[i];
-        predicted_[i] = x[i] + stepLengths[i] * (v[i] + 0.5 * (v[i] - previous));
-    }
-    carrier.sample(predicted_, time + scene_.time.dt, needs_, gasEnd_);
-
     const double fluidDensity = scene_.fluid.density;
     const double particleDensity = scene_.particles.density;
     const double viscosity = scene_.fluid.kinematicViscosity;
+    const double addedMass = inertia_.addedMassCoefficient();
+    // Prediction of the step's end on the smooth part w = v + s0 φ(age) of the velocity (the
+    // start mode s0 φ carries the √t of a release with slip): w_{n+1} ≈ 2 w_n − w_{n−1} (w_n on
+    // the first step), v* = w_{n+1} − s0 φ_{n+1}, x* = x + h (w_n + w_{n+1})/2 − s0 ∫φ.
+    predicted_.resize(cloud.size());
+    predictedVelocity_.resize(cloud.size());
+    smoothVelocity_.resize(cloud.size());
+#pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        double* state = stateOf(i);
+        const double h = stepLengths[i];
+        StartMode now{1, 0, 0}, next{1, 0, 0};
+        Vec3 startSlip = Vec3::Zero();
+        if (history_) {
+            Eigen::Map<Vec3> s0(state + historyOffset_);
+            if (state[0] == 0) s0 = gasStart_.velocity[i] - v[i]; // released now
+            startSlip = s0;
+            if (!startSlip.isZero(0)) {
+                const double alpha = std::sqrt(std::numbers::pi) *
+                                     bassetHistoryRate(particleDensity, fluidDensity, viscosity,
+                                                       cloud.radius[i], addedMass);
+                now = startMode(alpha, state[0]);
+                next = startMode(alpha, state[0] + h);
+            }
+        }
+        const Vec3 smooth = v[i] + now.value * startSlip;
+        const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : smooth;
+        const Vec3 smoothNext = 2 * smooth - previous;
+        smoothVelocity_[i] = smooth;
+        predictedVelocity_[i] = smoothNext - next.value * startSlip;
+        predicted_[i] =
+            x[i] + 0.5 * h * (smooth + smoothNext) - (next.integral - now.integral) * startSlip;
+    }
+    carrier.sample(predicted_, time + scene_.time.dt, needs_, gasEnd_);
+
     const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
     const LiftModel lift = scene_.physics.lift;
 #pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
@@ -63,19 +92,30 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         double* state = stateOf(i);
         const double radius = cloud.radius[i];
         const Vec3 velocity = v[i];
-        const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : velocity;
-        const Vec3 predictedVelocity = velocity + (velocity - previous);
         const Vec3& u0 = gasStart_.velocity[i];
         const Vec3& u1 = gasEnd_.velocity[i];
-        const Vec3 slipStart = u0 - velocity, slipEnd = u1 - predictedVelocity;
+        const Vec3 slipStart = u0 - velocity, slipEnd = u1 - predictedVelocity_[i];
 
         SlipStep step;
         step.h = stepLengths[i];
         step.gasStart = u0;
         step.gasEnd = u1;
-        // Drag per effective mass: f(Re)/τ_e = (ρp/ρ_e) / τ, at the predicted midpoint slip.
-        step.dragRate = particleDensity / effectiveDensity /
-                        dragResponseTime(drag_, radius, 0.5 * (slipStart + slipEnd).norm());
+        // Drag per effective mass k = f(Re)/τ_e = (ρp/ρ_e)/τ, frozen at its mean over the step:
+        // at the predicted midpoint slip; after a release with slip, k varies as √age like the
+        // slip, so the mean of k_n + (k_{n+1} − k_n)(√t − √t_n)/(√t_{n+1} − √t_n) over the step,
+        // k_n + (k_{n+1} − k_n)(2b + a)/(3(a + b)), a = √t_n, b = √t_{n+1} (2/3 on the first step,
+        // → ½ later): the midpoint would cost half an order there.
+        const auto dragRate = [&](const Vec3& slip) {
+            return particleDensity / effectiveDensity /
+                   dragResponseTime(drag_, radius, slip.norm());
+        };
+        if (history_ && !Vec3(state + historyOffset_).isZero(0)) {
+            const double a = std::sqrt(state[0]), b = std::sqrt(state[0] + step.h);
+            const double kStart = dragRate(slipStart), kEnd = dragRate(slipEnd);
+            step.dragRate = kStart + (kEnd - kStart) * (2 * b + a) / (3 * (a + b));
+        } else {
+            step.dragRate = dragRate(0.5 * (slipStart + slipEnd));
+        }
         step.forceStart = step.forceEnd = bodyAcceleration_;
         if (needs_.velocityGradient) {
             const Mat3& grad0 = gasStart_.velocityGradient[i];
@@ -102,11 +142,10 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
 
         StepResult result;
         if (history_) {
-            step.historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity, radius,
-                                                 inertia_.addedMassCoefficient());
+            step.historyRate =
+                bassetHistoryRate(particleDensity, fluidDensity, viscosity, radius, addedMass);
             double* historyState = state + historyOffset_;
             Eigen::Map<Vec3> startSlip(historyState), integral(historyState + 3);
-            if (state[0] == 0) startSlip = slipStart; // released now: s0 = u − v
             HistoryStart start{startSlip, state[0], integral};
             WindowTailHistory memory(*history_, historyState + 6);
             result = advanceWithHistory(step, velocity, start, memory);
@@ -116,7 +155,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
             HistoryStart start;
             result = advanceWithHistory(step, velocity, start, memory);
         }
-        Eigen::Map<Vec3>(state + 1) = velocity;
+        Eigen::Map<Vec3>(state + 1) = smoothVelocity_[i];
         state[0] += step.h;
         x[i] += result.displacement;
         v[i] = result.velocity;
