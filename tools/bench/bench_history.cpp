@@ -6,8 +6,8 @@
 //     build/tools/bench/bench_history --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; bytes_per_particle counts the kinematic arrays
 // (id, x, v, R) plus the model state. Compare the rows of one run as ratios.
+#include "bench_scene.h"
 #include "slides/carrier/make_carrier.h"
-#include "slides/config/scene_reader.h"
 #include "slides/integrate/stepper.h"
 
 #include <benchmark/benchmark.h>
@@ -19,10 +19,9 @@ namespace {
 enum Variant { dragOnly, dragHistory, fullMaxeyRiley };
 
 void unsteadyCost(benchmark::State& state) {
-    slides::Scene scene =
-        slides::readScene(std::filesystem::path(SLIDES_SOURCE_DIR) / "foamCases/analyticSpray");
-    scene.particles.count = state.range(0);
-    scene.injection.mode = slides::InjectionMode::allAtStart;
+    slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
+    // A long horizon for the tail (10⁴ steps), as in a long run; the timed steps stay inside it.
+    scene.time.endTime = 1e4 * scene.time.dt;
     const auto variant = static_cast<Variant>(state.range(1));
     auto& physics = scene.physics;
     if (variant != dragOnly) physics.history = slides::HistoryModel::basset;
@@ -30,11 +29,6 @@ void unsteadyCost(benchmark::State& state) {
         physics.addedMass = physics.pressureGradient = physics.spin = true;
         physics.lift = slides::LiftModel::saffmanMeiMagnus;
     }
-    // A long horizon for the tail (10⁴ steps), as in a long run; the timed steps stay inside it.
-    scene.time.endTime = 1e4 * scene.time.dt;
-    scene.time.stopWhenAllDone = false;
-    scene.surfaces.clear(); // keep every particle in flight while timing
-    scene.domain = {slides::Vec3::Constant(-1e9), slides::Vec3::Constant(1e9)};
     const auto carrier = slides::makeCarrier(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone
