@@ -5,7 +5,6 @@
 #include "slides/physics/spin.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace slides {
 
@@ -57,24 +56,24 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
     predicted_.resize(cloud.size());
     predictedVelocity_.resize(cloud.size());
     smoothVelocity_.resize(cloud.size());
+    startModes_.resize(cloud.size());
 #pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         double* state = stateOf(i);
         const double h = stepLengths[i];
-        StartMode now{1, 0, 0}, next{1, 0, 0};
+        StartModeStep& modes = startModes_[i];
+        modes = {};
         Vec3 startSlip = Vec3::Zero();
         if (history_) {
             Eigen::Map<Vec3> s0(state + historyOffset_);
             if (state[0] == 0) s0 = gasStart_.velocity[i] - v[i]; // released now
             startSlip = s0;
-            if (!startSlip.isZero(0)) {
-                const double alpha = std::sqrt(std::numbers::pi) *
-                                     bassetHistoryRate(particleDensity, fluidDensity, viscosity,
-                                                       cloud.radius[i], addedMass);
-                now = startMode(alpha, state[0]);
-                next = startMode(alpha, state[0] + h);
-            }
+            const double historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity,
+                                                         cloud.radius[i], addedMass);
+            modes = startModeStep(historyRate, HistoryStart{startSlip, state[0]}, h);
         }
+        const StartMode& now = modes.before;
+        const StartMode& next = modes.after;
         const Vec3 smooth = v[i] + now.value * startSlip;
         const Vec3 previous = state[0] > 0 ? Vec3(state + 1) : smooth;
         const Vec3 smoothNext = 2 * smooth - previous;
@@ -148,7 +147,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
             Eigen::Map<Vec3> startSlip(historyState), integral(historyState + 3);
             HistoryStart start{startSlip, state[0], integral};
             WindowTailHistory memory(*history_, historyState + 6);
-            result = advanceWithHistory(step, velocity, start, memory);
+            result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
             integral = start.integral;
         } else {
             NoHistory memory;

@@ -59,9 +59,10 @@ private:
     std::size_t spinOffset_ = 0, historyOffset_ = 0, width_ = 0;
 
     CarrierSample gasStart_, gasEnd_;
-    std::vector<Vec3> predicted_;         ///< x* of each particle
-    std::vector<Vec3> predictedVelocity_; ///< v* at the step's end
-    std::vector<Vec3> smoothVelocity_;    ///< w_n = v_n + s0 φ(age)
+    std::vector<Vec3> predicted_;           ///< x* of each particle
+    std::vector<Vec3> predictedVelocity_;   ///< v* at the step's end
+    std::vector<Vec3> smoothVelocity_;      ///< w_n = v_n + s0 φ(age)
+    std::vector<StartModeStep> startModes_; ///< φ and its integrals at both ends of the step
 };
 
 } // namespace slides

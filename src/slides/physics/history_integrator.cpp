@@ -173,19 +173,28 @@ void WindowTailHistory::endStep(const Vec3& remainder) {
     newest = remainder;
 }
 
+StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h) {
+    if (start.startSlip.isZero(0)) return {};
+    const double alpha = rootPi * historyRate;
+    return {startMode(alpha, start.age), startMode(alpha, start.age + h)};
+}
+
 template <typename Memory>
 StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
                               Memory& memory) {
+    return advanceWithHistory(step, velocity, start, memory,
+                              startModeStep(step.historyRate, start, step.h));
+}
+
+template <typename Memory>
+StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
+                              Memory& memory, const StartModeStep& modes) {
     const double h = step.h;
     const double theta = step.implicitness;
     const Vec3& s0 = start.startSlip;
     // The start mode s0 φ, integrated in closed form (zero when s0 = 0).
-    StartMode before{1, 0, 0}, after{1, 0, 0};
-    if (!s0.isZero(0)) {
-        const double alpha = rootPi * step.historyRate;
-        before = startMode(alpha, start.age);
-        after = startMode(alpha, start.age + h);
-    }
+    const StartMode& before = modes.before;
+    const StartMode& after = modes.after;
     const Vec3 startIntegral = (after.integral - before.integral) * s0;
     const Vec3 startHistory = (after.history - before.history) * s0;
     const Vec3 remainderBefore = step.gasStart - velocity - before.value * s0;
@@ -214,6 +223,8 @@ StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, Histor
 template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&, FullHistory&);
 template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&,
                                        WindowTailHistory&);
+template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&,
+                                       WindowTailHistory&, const StartModeStep&);
 template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&, NoHistory&);
 
 } // namespace slides

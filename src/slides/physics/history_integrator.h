@@ -51,6 +51,14 @@ struct StartMode {
 };
 StartMode startMode(double alpha, double age);
 
+/// The start mode at both ends of a step [age, age + h]; φ = 1, integrals 0 when s0 = 0.
+struct StartModeStep {
+    StartMode before{1, 0, 0};
+    StartMode after{1, 0, 0};
+};
+struct HistoryStart;
+StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h);
+
 /// Product-integration weight c_k of the node k steps back in I(t_n) = √h Σ_k c_k ρ_{n−k}
 /// for a node inside the integration range: piecewise-constant ρ (order 1, Daitche's first-order
 /// weights) or piecewise-linear ρ (order 2).
@@ -154,5 +162,9 @@ struct NoHistory {
 template <typename Memory>
 StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
                               Memory& memory);
+/// The same with the step's start modes already evaluated (startModeStep).
+template <typename Memory>
+StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
+                              Memory& memory, const StartModeStep& modes);
 
 } // namespace slides
