@@ -1,6 +1,7 @@
 // ctest-labels: history physics
 // Basset history force (Eq. 3.3 with Stokes drag, added mass and buoyancy) against the closed
-// form of a sphere released in a uniform stream or under gravity (Mordant & Pinton 2000,
+// form of a light (ρp/ρf = 0.4, real roots) or heavy (2.5, complex roots) sphere released in a
+// uniform stream or settling under gravity (Mordant & Pinton 2000,
 // Eur. Phys. J. B 18:343; Daitche 2013, J. Comput. Phys. 254:93, Sec. 5): observed orders of
 // the reference quadratures (orders 1 and 2) and of the window + exponential tail, with and
 // without initial slip, and the tail's accuracy over 10⁵ steps.
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <functional>
 #include <numbers>
@@ -19,7 +21,8 @@
 namespace slides {
 namespace {
 
-/// A light sphere in water: ρp/ρf = 0.4 makes the roots below real (ρp/ρf < 5/8).
+/// A sphere in water: light (ρp/ρf = 0.4, the roots below are real) or heavy (glass, 2.5,
+/// complex roots: the solution oscillates about its decay).
 struct Case {
     double fluidDensity = 1000, particleDensity = 400, viscosity = 1e-6, radius = 1e-3;
     double dragRate() const { // 1/τ_e: Stokes drag per effective mass m_p + m_f/2
@@ -32,18 +35,48 @@ struct Case {
         return -9.81 * (particleDensity - fluidDensity) / (particleDensity + 0.5 * fluidDensity);
     }
 };
+const Case light{};
+const Case heavy{1000, 2500, 1e-6, 5e-4};
+
+/// e^{z²} erfc(z) for Re z ≥ 0: power series Σ (−z)^k / Γ(1 + k/2) for |z| < 2.5 (largest term
+/// e^{|z|²} < 600, so round-off stays below 1e-13), else Laplace's continued fraction
+/// 1/(√π (z + ½/(z + 1/(z + 3/2/(z + …))))), 400 levels.
+std::complex<double> scaledComplementaryError(std::complex<double> z) {
+    if (std::abs(z) < 2.5) {
+        std::complex<double> sum = 0, power = 1;
+        for (int k = 0; k < 120; ++k) {
+            sum += power / std::tgamma(1.0 + 0.5 * k);
+            power *= -z;
+        }
+        return sum;
+    }
+    std::complex<double> fraction = z;
+    for (int n = 400; n >= 1; --n) fraction = z + (0.5 * n) / fraction;
+    return 1.0 / (std::sqrt(std::numbers::pi) * fraction);
+}
 
 /// Relative velocity w = v − U of dw/dt = −w/τ − r_H d/dt ∫ w/√(t−τ) dτ + g, w(0) = w0: in
 /// Laplace space W (s + r_H√π √s + 1/τ) = w0 + g/s; with λ1,2 the roots of λ² − αλ + 1/τ,
-/// α = r_H√π, and E_i = e^{λ_i² t} erfc(λ_i √t):
+/// α = r_H√π (real or a complex pair, Re λ = α/2 > 0), and E_i = e^{λ_i² t} erfc(λ_i √t):
 ///   w = [w0 (λ2 E2 − λ1 E1) + g ((1 − E1)/λ1 − (1 − E2)/λ2)] / (λ2 − λ1).
 double exactRelativeVelocity(const Case& c, double w0, double g, double t) {
+    using Complex = std::complex<double>;
     const double alpha = std::sqrt(std::numbers::pi) * c.historyRate();
-    const double root = std::sqrt(alpha * alpha - 4 * c.dragRate());
-    const double l1 = 0.5 * (alpha - root), l2 = 0.5 * (alpha + root);
-    const double e1 = scaledComplementaryError(l1 * std::sqrt(t));
-    const double e2 = scaledComplementaryError(l2 * std::sqrt(t));
-    return (w0 * (l2 * e2 - l1 * e1) + g * ((1 - e1) / l1 - (1 - e2) / l2)) / (l2 - l1);
+    const Complex root = std::sqrt(Complex(alpha * alpha - 4 * c.dragRate()));
+    const Complex l1 = 0.5 * (alpha - root), l2 = 0.5 * (alpha + root);
+    const Complex e1 = scaledComplementaryError(l1 * std::sqrt(t));
+    const Complex e2 = scaledComplementaryError(l2 * std::sqrt(t));
+    return ((w0 * (l2 * e2 - l1 * e1) + g * ((1.0 - e1) / l1 - (1.0 - e2) / l2)) / (l2 - l1))
+        .real();
+}
+
+TEST(HistoryClosedForm, ComplexErrorFunctionAgreesWithTheRealOne) {
+    // The two branches of the complex e^{z²}erfc(z) against the real one on the real axis.
+    for (const double x : {0.0, 0.3, 1.0, 2.4, 2.6, 5.0, 30.0})
+        EXPECT_NEAR(scaledComplementaryError(std::complex<double>(x)).real() /
+                        slides::scaledComplementaryError(x),
+                    1.0, 1e-11)
+            << "x = " << x;
 }
 
 enum class Scheme { reference1, reference2, reference2NaiveStart, windowTail };
@@ -109,8 +142,9 @@ TEST(HistoryClosedForm, ReferenceIntegratorConvergesToTheErfcSolution) {
     // The formula and the integrators check each other: at h = 1/5120 the second-order
     // reference (error ≈ 4e-7 from the orders below, 10⁻⁶ of the 0.3 m/s slip) matches the erfc
     // solution to 1e-6 m/s; a wrong root or sign in the formula gives errors of order 0.1 m/s.
-    const Case c;
-    EXPECT_LT(maxError(Scheme::reference2, c, 0.3, c.gravity(), 1.0 / 5120, 5120), 1e-6);
+    for (const Case& c : {light, heavy})
+        EXPECT_LT(maxError(Scheme::reference2, c, 0.3, c.gravity(), 1.0 / 5120, 5120), 1e-6)
+            << "ρp = " << c.particleDensity;
 }
 
 struct OrderCase {
@@ -118,6 +152,7 @@ struct OrderCase {
     double startSlip; ///< s0 [m/s]
     bool gravity;
     double low, high; ///< accepted band of the measured order
+    bool isHeavy = false;
 };
 
 class HistoryOrders : public ::testing::TestWithParam<OrderCase> {};
@@ -129,25 +164,29 @@ TEST_P(HistoryOrders, MeasuredOrderMatchesDesign) {
     // start (product trapezoid on the slip itself, Maxey's s0/√t term left to the quadrature)
     // makes a first-step error O(h) in v (s − s0 ∝ √t is not linear on [0, h]): order ≈ 1.
     const OrderCase& p = GetParam();
-    const Case c;
-    const std::string label =
-        std::string(p.startSlip != 0 ? "initial slip" : "released with the gas") +
-        (p.gravity ? ", gravity" : "");
+    const Case& c = p.isHeavy ? heavy : light;
+    const std::string label = std::string(p.isHeavy ? "heavy, " : "light, ") +
+                              (p.startSlip != 0 ? "initial slip" : "released with the gas") +
+                              (p.gravity ? ", gravity" : "");
     const double order =
         observedOrder(p.scheme, c, p.startSlip, p.gravity ? c.gravity() : 0.0, label.c_str());
     EXPECT_GE(order, p.low);
     EXPECT_LE(order, p.high);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryScheme, HistoryOrders,
-                         ::testing::Values(OrderCase{Scheme::reference1, 0.0, true, 0.85, 1.1},
-                                           OrderCase{Scheme::reference2, 0.0, true, 1.85, 2.1},
-                                           OrderCase{Scheme::windowTail, 0.0, true, 1.85, 2.1},
-                                           OrderCase{Scheme::reference1, 0.3, false, 0.85, 1.1},
-                                           OrderCase{Scheme::reference2, 0.3, false, 1.85, 2.1},
-                                           OrderCase{Scheme::windowTail, 0.3, true, 1.85, 2.1},
-                                           OrderCase{Scheme::reference2NaiveStart, 0.3, false, 0.8,
-                                                     1.2}));
+INSTANTIATE_TEST_SUITE_P(
+    EveryScheme, HistoryOrders,
+    ::testing::Values(OrderCase{Scheme::reference1, 0.0, true, 0.85, 1.1},
+                      OrderCase{Scheme::reference2, 0.0, true, 1.85, 2.1},
+                      OrderCase{Scheme::windowTail, 0.0, true, 1.85, 2.1},
+                      OrderCase{Scheme::reference1, 0.3, false, 0.85, 1.1},
+                      OrderCase{Scheme::reference2, 0.3, false, 1.85, 2.1},
+                      OrderCase{Scheme::windowTail, 0.3, true, 1.85, 2.1},
+                      OrderCase{Scheme::reference2NaiveStart, 0.3, false, 0.8, 1.2},
+                      OrderCase{Scheme::reference1, 0.3, true, 0.85, 1.1, true},
+                      OrderCase{Scheme::reference2, 0.0, true, 1.85, 2.1, true},
+                      OrderCase{Scheme::windowTail, 0.3, true, 1.85, 2.1, true},
+                      OrderCase{Scheme::reference2NaiveStart, 0.3, true, 0.8, 1.2, true}));
 
 TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
     // 10⁵ steps of h = τ/200 up to t = 500 τ, with initial slip and gravity: the kernel's
@@ -155,7 +194,7 @@ TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
     // term is at most the slip scale (0.3 m/s here, and the terminal slip ≈ 1.3 m/s), so the
     // velocity stays within 1e-3 × 1.3 m/s of the erfc solution; the discretisation error at this
     // step is ~1e-7 (the orders above). Memory: a fixed number of doubles per particle.
-    const Case c;
+    const Case& c = light;
     const double h = 1.0 / c.dragRate() / 200;
     const long steps = 100000;
     const double accuracy = 1e-3;
@@ -173,7 +212,7 @@ TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
 TEST(HistoryWindowTail, FollowsTheFullMemoryReference) {
     // Same steps, same inputs, 2·10⁴ steps: the two differ only by the tail's kernel error, so
     // |v_tail − v_ref| ≤ accuracy × (history term ≤ terminal slip) for each accuracy target.
-    const Case c;
+    const Case& c = light;
     const double h = 1.0 / c.dragRate() / 200;
     const long steps = 20000;
     const double terminalSlip = std::abs(c.gravity() / c.dragRate());
