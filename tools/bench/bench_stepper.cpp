@@ -3,8 +3,8 @@
 //
 //     build/tools/bench/bench_stepper --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second.
+#include "bench_scene.h"
 #include "slides/carrier/make_carrier.h"
-#include "slides/config/scene_reader.h"
 #include "slides/integrate/stepper.h"
 
 #include <benchmark/benchmark.h>
@@ -12,16 +12,9 @@
 namespace {
 
 void stepperThroughput(benchmark::State& state) {
-    slides::Scene scene =
-        slides::readScene(std::filesystem::path(SLIDES_SOURCE_DIR) / "foamCases/analyticSpray");
-    scene.particles.count = state.range(0);
-    scene.injection.mode = slides::InjectionMode::allAtStart;
+    slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
     const auto integrator = slides::integratorNames()[static_cast<std::size_t>(state.range(1))];
     scene.time.integrator = integrator.value;
-    scene.time.endTime = 1e9;
-    scene.time.stopWhenAllDone = false;
-    scene.surfaces.clear(); // keep every particle in flight while timing
-    scene.domain = {slides::Vec3::Constant(-1e9), slides::Vec3::Constant(1e9)};
     const auto carrier = slides::makeCarrier(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone

@@ -11,6 +11,8 @@
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/history_integrator.h"
+#include "slides/physics/lift.h"
 
 #include <array>
 #include <cstdint>
@@ -84,6 +86,13 @@ struct PhysicsSettings {
     DragModel drag = DragModel::haiderLevenspiel;
     Vec3 gravity = Vec3::Zero(); ///< [m/s²]
     bool buoyancy = true;
+    // Unsteady terms (integrate/maxey_riley.h); all off by default.
+    HistoryModel history = HistoryModel::none;
+    double historyAccuracy = 1e-3; ///< relative error target of the history kernel's tail
+    bool addedMass = false;
+    bool pressureGradient = false;
+    LiftModel lift = LiftModel::none;
+    bool spin = false;
 };
 
 struct TimeSettings {

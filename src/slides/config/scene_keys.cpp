@@ -4,6 +4,8 @@
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/history_integrator.h"
+#include "slides/physics/lift.h"
 
 #include <sstream>
 
@@ -133,6 +135,20 @@ std::vector<KeyDeclaration> declareKeys() {
          "Gravitational acceleration."},
         {"physics.buoyancy", K::boolean, "-", "on", {}, R::any,
          "Subtract the displaced gas's weight, (m − mf) g of Eq. 3.16."},
+        {"physics.history", K::dictionary, "-", "-", {}, R::any,
+         "Basset history force (Eq. 3.3; physics/history_integrator.h)."},
+        {"physics.history.model", K::word, "-", "none", namesOf(historyModelNames()), R::any,
+         "none: no history force; basset: Basset's kernel, window + exponential-sum tail."},
+        {"physics.history.accuracy", K::scalar, "-", "1e-3", {}, R::positive,
+         "Relative error of the tail's kernel over the run; sets its window and terms."},
+        {"physics.addedMass", K::boolean, "-", "off", {}, R::any,
+         "Added mass C_A = 1/2 (Eq. 3.3): inertia m_p + m_f/2, and C_A m_f DU/Dt."},
+        {"physics.pressureGradient", K::boolean, "-", "off", {}, R::any,
+         "Undisturbed-flow force m_f DU/Dt (Eq. 3.3), DU/Dt = (U·∇)U of the steady carrier."},
+        {"physics.lift", K::word, "-", "none", namesOf(liftModelNames()), R::any,
+         "Saffman–Mei shear lift and/or Magnus spin lift (physics/lift.h); magnus needs spin."},
+        {"physics.spin", K::boolean, "-", "off", {}, R::any,
+         "Particle spin under the viscous torque of Eq. 3.18, relaxing to half the vorticity."},
 
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "", {}, R::positive, "Time step."},

@@ -368,6 +368,16 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.drag = *valueNamed(dragModelNames(), keys.word("physics.drag"));
     scene.physics.gravity = keys.vector("physics.gravity");
     scene.physics.buoyancy = keys.boolean("physics.buoyancy");
+    scene.physics.history = *valueNamed(historyModelNames(), keys.word("physics.history.model"));
+    scene.physics.historyAccuracy = keys.scalar("physics.history.accuracy");
+    if (scene.physics.historyAccuracy >= 1)
+        keys.fail("physics.history.accuracy", "must be below 1 (a relative error)");
+    scene.physics.addedMass = keys.boolean("physics.addedMass");
+    scene.physics.pressureGradient = keys.boolean("physics.pressureGradient");
+    scene.physics.lift = *valueNamed(liftModelNames(), keys.word("physics.lift"));
+    scene.physics.spin = keys.boolean("physics.spin");
+    if (usesSpinLift(scene.physics.lift) && !scene.physics.spin)
+        keys.fail("physics.lift", "magnus lift needs the particle spin: set physics.spin on");
 
     scene.time.dt = keys.scalar("time.dt");
     scene.time.endTime = keys.scalar("time.endTime");

@@ -1,5 +1,7 @@
 #include "slides/core/particle_cloud.h"
 
+#include <algorithm>
+
 namespace slides {
 
 void ParticleCloud::reserve(std::size_t count) {
@@ -7,6 +9,7 @@ void ParticleCloud::reserve(std::size_t count) {
     position.reserve(count);
     velocity.reserve(count);
     radius.reserve(count);
+    modelState.reserve(count * stateWidth);
 }
 
 void ParticleCloud::add(ParticleId particleId, const Vec3& x, const Vec3& v,
@@ -15,6 +18,7 @@ void ParticleCloud::add(ParticleId particleId, const Vec3& x, const Vec3& v,
     position.push_back(x);
     velocity.push_back(v);
     radius.push_back(particleRadius);
+    modelState.resize(modelState.size() + stateWidth, 0.0);
 }
 
 void ParticleCloud::removeAt(std::size_t index) {
@@ -23,6 +27,12 @@ void ParticleCloud::removeAt(std::size_t index) {
         array[index] = array.back();
         array.pop_back();
     });
+    const std::size_t last = modelState.size() / std::max<std::size_t>(stateWidth, 1);
+    if (stateWidth > 0 && index + 1 != last)
+        std::copy_n(modelState.begin() + static_cast<std::ptrdiff_t>((last - 1) * stateWidth),
+                    stateWidth,
+                    modelState.begin() + static_cast<std::ptrdiff_t>(index * stateWidth));
+    modelState.resize(modelState.size() - stateWidth);
 }
 
 } // namespace slides

@@ -25,6 +25,10 @@ struct ParticleCloud {
     std::vector<double> radius; ///< [m]
     /// A mesh carrier's cell of each particle (CarrierField::sampleFrom); empty otherwise.
     std::vector<std::int32_t> carrierLocation;
+    /// Per-particle model state (history memory, spin): stateWidth doubles a particle, moved
+    /// with it; empty when no model keeps state.
+    std::vector<double> modelState;
+    std::size_t stateWidth = 0;
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -34,9 +38,10 @@ struct ParticleCloud {
     /// Removes the particle at index by moving the last particle into its place.
     void removeAt(std::size_t index);
 
-    /// Calls visit(name, array) for every per-particle array, so that removal, checkpoints
-    /// and restarts (io/checkpoint.h) handle each array a model adds once it is listed here.
-    /// Arrays of models that are off are empty.
+    /// Calls visit(name, array) for every array of one entry per particle, so that removal,
+    /// checkpoints and restarts (io/checkpoint.h) handle each array a model adds once it is
+    /// listed here. Arrays of models that are off are empty. (modelState, stateWidth entries a
+    /// particle, is handled beside them.)
     template <typename Cloud, typename Visitor>
     static void forEachArray(Cloud& cloud, Visitor visit) {
         visit("id", cloud.id);

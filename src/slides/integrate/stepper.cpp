@@ -17,6 +17,10 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
       injector_(scene) {
+    if (MaxeyRileyStepper::needed(scene.physics)) {
+        maxeyRiley_.emplace(scene);
+        cloud_.stateWidth = maxeyRiley_->stateWidth();
+    }
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
 
@@ -37,6 +41,8 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
     escaped_ = counters.escaped;
     particleSteps_ = counters.particleSteps;
     injector_.resumeAfter(counters.injected);
+    if (cloud.stateWidth != cloud_.stateWidth)
+        throw std::logic_error("checkpoint's model state does not fit the scene's models");
     cloud_ = std::move(cloud);
     arrivals_ = std::move(arrivals);
 }
@@ -84,6 +90,7 @@ constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); }
 } // namespace
 
 void Stepper::advance(double h) {
+    if (maxeyRiley_) return maxeyRiley_->advance(cloud_, carrier_, time_, stepLengths_);
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;

@@ -9,6 +9,8 @@
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
+//      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
+//      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator;
 //   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
 //      domain box, or the carrier's mesh, has escaped; both leave the cloud.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
@@ -20,10 +22,12 @@
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injector.h"
+#include "slides/integrate/maxey_riley.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace slides {
@@ -78,6 +82,7 @@ private:
     long steps_ = 0;
     long escaped_ = 0;
     std::uint64_t particleSteps_ = 0;
+    std::optional<MaxeyRileyStepper> maxeyRiley_; ///< when an unsteady term is on
 
     // Scratch, reused every step.
     CarrierSample gas_;

@@ -4,6 +4,7 @@
 #include "slides/io/atomic_file.h"
 #include "slides/io/hdf5_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -108,6 +109,10 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     ParticleCloud::forEachArray(stepper.cloud(), [&](const char* name, const auto& array) {
         writeColumn(file, cloud.get(), name, array);
     });
+    const std::size_t width = stepper.cloud().stateWidth;
+    file.writeAttribute(cloud.get(), "stateWidth", static_cast<std::int64_t>(width));
+    file.writeDataset(cloud.get(), "modelState", stepper.cloud().modelState,
+                      std::max<std::size_t>(width, 1), "SI");
     ArrivalColumns arrivals;
     for (const Arrival& arrival : stepper.arrivals()) {
         arrivals.id.push_back(arrival.id);
@@ -167,6 +172,11 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
                                     std::to_string(array.size()) + " entries, not " +
                                     std::to_string(count));
     });
+    state.cloud.stateWidth = static_cast<std::size_t>(file.readInt64(g + "/cloud", "stateWidth"));
+    state.cloud.modelState =
+        file.readDoubles(g + "/cloud/modelState", std::max<std::size_t>(state.cloud.stateWidth, 1));
+    if (state.cloud.modelState.size() != count * state.cloud.stateWidth)
+        refuse(file.path(), "damaged: model state does not match the particles");
     ArrivalColumns arrivals;
     ArrivalColumns::forEach(arrivals, [&](const char* name, auto& array) {
         readColumn(file, g + "/arrivals/" + name, array);

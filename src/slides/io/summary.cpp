@@ -97,7 +97,14 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"seed", scene.injection.seed}};
     settings["physics"] = {{"drag", nameOf(dragModelNames(), scene.physics.drag)},
                            {"gravity", vec(scene.physics.gravity)},
-                           {"buoyancy", scene.physics.buoyancy}};
+                           {"buoyancy", scene.physics.buoyancy},
+                           {"history",
+                            {{"model", nameOf(historyModelNames(), scene.physics.history)},
+                             {"accuracy", scene.physics.historyAccuracy}}},
+                           {"addedMass", scene.physics.addedMass},
+                           {"pressureGradient", scene.physics.pressureGradient},
+                           {"lift", nameOf(liftModelNames(), scene.physics.lift)},
+                           {"spin", scene.physics.spin}};
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},

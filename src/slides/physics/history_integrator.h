@@ -1,0 +1,170 @@
+// Basset history integrators: full-memory product quadrature (reference) and a fixed-memory
+// window + exponential-sum tail (production), both implicit in the new velocity.
+//
+// Reference: Eq. 3.2–3.3 of the reference; Daitche (2013, J. Comput. Phys. 254:93) for
+// product-integration weights of the 1/√(t − τ) kernel; van Hinsberg, ten Thije Boonkkamp &
+// Clercx (2011, J. Comput. Phys. 230:1465) for the window + exponential tail; Jiang & Greengard
+// (2004) / Beylkin & Monzón (2010) for the exponential sum of 1/√t by the trapezoid rule in log
+// time. The equation of motion per unit effective mass, with slip s = u − v, is
+//   dv/dt = s/τ + a + r_H d/dt I(t),   I(t) = ∫_0^t s(τ)/√(t − τ) dτ      (Eq. 3.3)
+// and is advanced in its integrated (Volterra) form over a step [t_n, t_n + h]:
+//   v_{n+1} = v_n + ∫ s/τ dt + ∫ a dt + r_H (I_{n+1} − I_n).
+// Start: a particle released with slip s0 ≠ 0 has s − s0 ∝ √t, which costs every polynomial
+// quadrature half an order (Daitche's third-order scheme falls to about 1.5). The slip is split as
+// s = s0 φ(t) + ρ(t) with the start mode φ(t) = e^{α²t} erfc(α√t), α = √π r_H, whose √t term is
+// the exact one of the solution (v − v0 ≈ 2 r_H s0 √t); φ's integrals are closed form, and the
+// remainder ρ = O(t) with ρ(0) = 0 is integrated by the quadrature at full order.
+//
+//     physics { history { model basset; accuracy 1e-3; } }   // model none | basset
+#pragma once
+
+#include "slides/core/vector.h"
+
+#include <array>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace slides {
+
+enum class HistoryModel { none, basset };
+
+struct HistoryModelName {
+    HistoryModel value;
+    std::string_view name;
+};
+
+/// The name table of the history family. How to add one: an enumerator here, its kernel in
+/// physics/history_kernel.h, and its memory in the Maxey–Riley stepper (integrate/maxey_riley.h).
+constexpr std::array<HistoryModelName, 2> historyModelNames() {
+    return {{{HistoryModel::none, "none"}, {HistoryModel::basset, "basset"}}};
+}
+
+/// e^{x²} erfc(x) for x ≥ 0, without overflow for large x.
+double scaledComplementaryError(double x);
+
+/// The start mode φ(t) = e^{α²t} erfc(α√t) and its closed-form integrals.
+struct StartMode {
+    double value;    ///< φ(t)
+    double integral; ///< ∫_0^t φ dτ [s]
+    double history;  ///< ∫_0^t φ(τ)/√(t − τ) dτ [√s]
+};
+StartMode startMode(double alpha, double age);
+
+/// The start mode at both ends of a step [age, age + h]; φ = 1, integrals 0 when s0 = 0.
+struct StartModeStep {
+    StartMode before{1, 0, 0};
+    StartMode after{1, 0, 0};
+};
+struct HistoryStart;
+StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h);
+
+/// Product-integration weight c_k of the node k steps back in I(t_n) = √h Σ_k c_k ρ_{n−k}
+/// for a node inside the integration range: piecewise-constant ρ (order 1, Daitche's first-order
+/// weights) or piecewise-linear ρ (order 2).
+double productWeight(int order, long lag);
+/// Weight of the oldest node ρ_0 when it sits lag steps back (order 2; 0 for order 1).
+double productEndWeight(int order, long lag);
+
+/// 1/√ℓ ≈ Σ_i amplitude_i e^{−ℓ/timescale_i} for ℓ in [window, horizon] with relative error
+/// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx.
+struct ExponentialSum {
+    std::vector<double> amplitude; ///< [1/√s]
+    std::vector<double> timescale; ///< [s]
+
+    static ExponentialSum fit(double window, double horizon, double accuracy);
+    double operator()(double lag) const;
+    std::size_t size() const { return amplitude.size(); }
+};
+
+/// One step of the equation of motion for one particle (all accelerations per effective mass).
+struct SlipStep {
+    double h = 0;                   ///< step length [s]
+    double implicitness = 0.5;      ///< θ: ½ trapezoid (order 2), 1 backward Euler (order 1)
+    double dragRate = 0;            ///< 1/τ frozen over the step [1/s]
+    double historyRate = 0;         ///< r_H [1/√s]
+    Vec3 gasStart = Vec3::Zero();   ///< u at the particle at t_n [m/s]
+    Vec3 gasEnd = Vec3::Zero();     ///< u at the particle at t_{n+1} [m/s]
+    Vec3 forceStart = Vec3::Zero(); ///< every other acceleration at t_n [m/s²]
+    Vec3 forceEnd = Vec3::Zero();   ///< and at t_{n+1} [m/s²]
+};
+
+/// What a particle carries besides its memory of ρ: the start slip s0, its age, and I_n of ρ.
+struct HistoryStart {
+    Vec3 startSlip = Vec3::Zero(); ///< s0 = u − v at release [m/s]; zero: no start treatment
+    double age = 0;                ///< time since release at the step start [s]
+    Vec3 integral = Vec3::Zero();  ///< I_n of the remainder ρ [m/√s]
+};
+
+/// The result of a step: new velocity, displacement ∫ v dt.
+struct StepResult {
+    Vec3 velocity;
+    Vec3 displacement;
+};
+
+/// Reference memory: every past ρ_j, O(n) work per step (Daitche 2013 style weights).
+class FullHistory {
+public:
+    /// order 1 or 2; startRemainder is ρ_0 (zero with the start treatment, s0 without).
+    FullHistory(double h, int order, const Vec3& startRemainder = Vec3::Zero());
+    double newestWeight() const { return rootH_ * productWeight(order_, 0); }
+    /// √h Σ_{k≥1} c_k ρ_{n+1−k}: the part of I_{n+1} known before ρ_{n+1}.
+    Vec3 beginStep();
+    void endStep(const Vec3& remainder) { values_.push_back(remainder); }
+    std::size_t bytes() const { return values_.capacity() * sizeof(Vec3); }
+
+private:
+    double rootH_;
+    int order_;
+    std::vector<Vec3> values_;    ///< ρ_0 … ρ_n
+    std::vector<double> weights_; ///< c_k, extended as n grows
+};
+
+/// Fixed-size description of the window + tail memory shared by every particle.
+struct WindowTailLayout {
+    double h = 0;
+    int window = 1;                    ///< steps integrated exactly (lags 0 … window)
+    ExponentialSum tail;               ///< kernel for lags ≥ window·h
+    std::vector<double> windowWeights; ///< √h c_k, k = 0 … window−1, and √h·end weight at window
+    std::vector<double> tailDecay, tailNewWeight, tailOldWeight; ///< per term, for one step
+
+    /// Window and terms from the accuracy target (relative kernel error) for ages up to horizon.
+    static WindowTailLayout make(double h, double horizon, double accuracy);
+    /// Doubles per particle: ρ at lags 0 … window, and one tail sum per term, 3 components each.
+    std::size_t doubles() const { return 3 * (window + 1 + tail.size()); }
+};
+
+/// Production memory: a view on one particle's doubles (layout.doubles() of them).
+class WindowTailHistory {
+public:
+    WindowTailHistory(const WindowTailLayout& layout, double* state)
+        : layout_(layout), state_(state) {}
+    double newestWeight() const { return layout_.windowWeights[0]; }
+    Vec3 beginStep(); ///< advances the tail sums to t_{n+1}; returns the known part of I_{n+1}
+    void endStep(const Vec3& remainder);
+
+private:
+    Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
+    const WindowTailLayout& layout_;
+    double* state_;
+};
+
+/// No memory: the same step without a history force (added mass, pressure gradient, lift only).
+struct NoHistory {
+    double newestWeight() const { return 0; }
+    Vec3 beginStep() { return Vec3::Zero(); }
+    void endStep(const Vec3&) {}
+};
+
+/// Advances v (and x by the returned displacement) over one step with the history term implicit
+/// in v_{n+1}; memory is FullHistory or WindowTailHistory. Linear in v for a frozen τ, so one
+/// scalar division solves it, and drag as stiff as it likes stays stable.
+template <typename Memory>
+StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
+                              Memory& memory);
+/// The same with the step's start modes already evaluated (startModeStep).
+template <typename Memory>
+StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
+                              Memory& memory, const StartModeStep& modes);
+
+} // namespace slides
