@@ -27,10 +27,19 @@ using test::runCli;
 using test::ScratchDirectory;
 using test::slurp;
 
-/// The default case copied into scratch, so tests may edit its dictionary.
-void copyDefaultCase(const ScratchDirectory& scratch) {
-    fs::copy_file(defaultCase / "constant" / "slidesProperties",
-                  scratch.path / "constant" / "slidesProperties");
+/// The default case copied into scratch, so tests may edit its dictionary; with
+/// unsteadyForces, every unsteady force on (per-particle history state to checkpoint).
+void copyDefaultCase(const ScratchDirectory& scratch, bool unsteadyForces = false) {
+    std::string text = slurp(defaultCase / "constant" / "slidesProperties");
+    if (unsteadyForces) {
+        const std::string buoyancy = "buoyancy    on;";
+        const auto at = text.find(buoyancy);
+        ASSERT_NE(at, std::string::npos);
+        text.replace(at, buoyancy.size(),
+                     buoyancy + " history { model basset; } addedMass on; pressureGradient on;"
+                                " lift saffmanMeiMagnus; spin on;");
+    }
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
 
 std::vector<std::string> frameFiles(const fs::path& directory) {
@@ -69,11 +78,17 @@ bool killMidRun(const std::vector<std::string>& arguments, const fs::path& check
     return WIFSIGNALED(status);
 }
 
-class KilledRun : public testing::TestWithParam<int> {};
+struct KillMoment {
+    int delayMilliseconds; ///< after the first checkpoint appears
+    bool unsteadyForces;
+};
+
+class KilledRun : public testing::TestWithParam<KillMoment> {};
 
 TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
-    ScratchDirectory scratch("restart-" + std::to_string(GetParam()));
-    copyDefaultCase(scratch);
+    const auto [delay, unsteadyForces] = GetParam();
+    ScratchDirectory scratch("restart-" + std::to_string(delay) + (unsteadyForces ? "u" : ""));
+    copyDefaultCase(scratch, unsteadyForces);
     const fs::path reference = scratch.path / "reference";
     const fs::path resumed = scratch.path / "resumed";
     ASSERT_EQ(runCli(scratch.path.string() + " --quiet --threads 2 --output " + reference.string(),
@@ -83,7 +98,7 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
     const bool killed =
         killMidRun({scratch.path.string(), "--quiet", "--threads", "2", "--checkpoint-every", "20",
                     "--output", resumed.string()},
-                   resumed / "checkpoint.h5", std::chrono::milliseconds(GetParam()));
+                   resumed / "checkpoint.h5", std::chrono::milliseconds(delay));
     ASSERT_TRUE(killed) << "the run ended before it could be killed: the test proves nothing";
     ASSERT_FALSE(fs::exists(resumed / "summary.json"));
     // What the killed run completed is intact: no temporaries pass for files.
@@ -122,9 +137,15 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
               expected.readDoubles("/arrivals/velocity", 3));
 }
 
-// Kill moments after the first checkpoint: soon, and well into the run.
-INSTANTIATE_TEST_SUITE_P(Moments, KilledRun, testing::Values(0, 150),
-                         [](const auto& info) { return std::to_string(info.param) + "ms"; });
+// Kill moments after the first checkpoint: soon, and well into the run; and with the history
+// force's memory, spin and the rest of the Maxey–Riley state to carry across.
+INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
+                         testing::Values(KillMoment{0, false}, KillMoment{150, false},
+                                         KillMoment{100, true}),
+                         [](const auto& info) {
+                             return std::to_string(info.param.delayMilliseconds) + "ms" +
+                                    (info.param.unsteadyForces ? "WithUnsteadyForces" : "");
+                         });
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.
 class Checkpointed : public testing::Test {

@@ -4,6 +4,7 @@
 #include "slides/core/error.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace slides {
 
@@ -48,7 +49,12 @@ std::vector<FoamPatch> readBoundary(const std::filesystem::path& file) {
     return patches;
 }
 
-std::vector<int> toInt(const std::vector<std::int64_t>& values) {
+/// Labels as int (meshes here have fewer than 2³¹ points, faces and cells); one beyond that
+/// range is an error of the file, not a silent wrap-around.
+std::vector<int> toInt(const std::vector<std::int64_t>& values, const FoamFile& in) {
+    for (const auto value : values)
+        if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+            in.fail("label " + std::to_string(value) + " out of range");
     return {values.begin(), values.end()};
 }
 
@@ -69,21 +75,31 @@ FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
             if (point < 0 || point >= static_cast<std::int64_t>(mesh.points.size()))
                 in.fail("face point label " + std::to_string(point) + " outside the " +
                         std::to_string(mesh.points.size()) + " points");
-        mesh.faceOffsets = toInt(offsets);
-        mesh.facePoints = toInt(labels);
+        mesh.faceOffsets = toInt(offsets, in);
+        mesh.facePoints = toInt(labels, in);
     }
     const long faceCount = static_cast<long>(mesh.faceOffsets.size()) - 1;
     {
         FoamFile in(dir / "owner");
-        mesh.owner = toInt(in.list<std::int64_t>(faceCount));
+        mesh.owner = toInt(in.list<std::int64_t>(faceCount), in);
     }
     {
         FoamFile in(dir / "neighbour");
-        mesh.neighbour = toInt(in.list<std::int64_t>());
+        mesh.neighbour = toInt(in.list<std::int64_t>(), in);
         if (static_cast<long>(mesh.neighbour.size()) > faceCount)
             in.fail("more neighbours than faces");
     }
     mesh.patches = readBoundary(dir / "boundary");
+    // Every cell has at least 4 faces and a face at most 2 cells: at most faceCount / 2 cells.
+    const auto checkCells = [&](const std::vector<int>& cells, const char* file) {
+        for (const int cell : cells)
+            if (cell < 0 || cell > faceCount / 2)
+                throw InputError((dir / file).string(), 0, "",
+                                 "cell label " + std::to_string(cell) + " impossible for a mesh of " +
+                                     std::to_string(faceCount) + " faces");
+    };
+    checkCells(mesh.owner, "owner");
+    checkCells(mesh.neighbour, "neighbour");
     mesh.cellCount = 0;
     for (const int cell : mesh.owner) mesh.cellCount = std::max(mesh.cellCount, cell + 1);
     for (const int cell : mesh.neighbour) mesh.cellCount = std::max(mesh.cellCount, cell + 1);
