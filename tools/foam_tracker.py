@@ -11,9 +11,9 @@ share the mesh and the converged U:
                    cross-span speed), the latest simpleFoam time; run by slides-track.
   WORK/openfoam/   particleTracking/ dictionaries of the case (kinematicCloudProperties: the
                    same drag, gravity, stick at the plate), 0/U from simpleFoam, uniform p and T
-                   giving ρ = 1.1 kg/m³; parcels injected at the positions slides-track's first
-                   frame holds, with that frame's mean velocity (both codes then start from the
-                   same state); run by uncoupledKinematicParcelFoam.
+                   giving ρ = 1.1 kg/m³; each parcel injected at the position and with the
+                   velocity its particle has in slides-track's first frame (both codes then
+                   start from the same state); run by uncoupledKinematicParcelFoam.
 
 Without slides-track (--foam-only) the particles start at t = 0 on a seeded random sample of
 the injection disc with the nozzle velocity.
@@ -199,8 +199,30 @@ def frozen_velocity(source):
     return text[:start] + 'boundaryField\n{\n    ".*" { type calculated; value uniform (0 0 0); }\n}\n'
 
 
-def prepare_openfoam(case, work, positions, velocity, start_time, diameter):
-    """WORK/openfoam: parcels injected at start_time at the given positions with velocity."""
+def write_positions(path, positions):
+    lines = "\n".join(f"({p[0]:.12g} {p[1]:.12g} {p[2]:.12g})" for p in positions)
+    path.write_text("FoamFile { version 2.0; format ascii; class vectorField; "
+                    f"object {path.name}; }}\n{len(positions)}\n(\n{lines}\n)\n")
+
+
+def injection_models(nozzle, positions, velocities, constant):
+    """The template's `nozzle` manualInjection once per particle, each with its own positions
+    file and U0 (manualInjection gives all its parcels one U0); origId k is then particle k, as
+    parcels are numbered in injection order."""
+    models = []
+    for k, (position, velocity) in enumerate(zip(positions, velocities)):
+        write_positions(constant / f"kinematicCloudPositions.{k}", [position])
+        model = re.sub(r'positionsFile\s+"[^"]*";', f'positionsFile   "kinematicCloudPositions.{k}";',
+                       nozzle)
+        model = re.sub(r"U0\s+\([^)]*\);",
+                       "U0              ({:.12g} {:.12g} {:.12g});".format(*velocity), model)
+        models.append(model.replace("nozzle", f"particle{k}", 1))
+    return "\n".join(models)
+
+
+def prepare_openfoam(case, work, positions, velocities, start_time, diameter):
+    """WORK/openfoam: parcels injected at start_time at the given positions, with one velocity
+    for all (a vector: one injection model) or one each (an N × 3 array: one model each)."""
     target = work / "openfoam"
     shutil.rmtree(target, ignore_errors=True)
     template = Path(case) / "particleTracking"
@@ -213,16 +235,19 @@ def prepare_openfoam(case, work, positions, velocity, start_time, diameter):
     # ρ = p W/(R T) = 1.1 kg/m³ with W of constant/thermophysicalProperties.
     write_foam_field(start / "p", "volScalarField", "[1 -1 -2 0 0 0 0]", "1e5")
     write_foam_field(start / "T", "volScalarField", "[0 0 0 1 0 0 0]", "293.15")
-    lines = "\n".join(f"({p[0]:.12g} {p[1]:.12g} {p[2]:.12g})" for p in positions)
-    (target / "constant/kinematicCloudPositions").write_text(
-        "FoamFile { version 2.0; format ascii; class vectorField; "
-        f"object kinematicCloudPositions; }}\n{len(positions)}\n(\n{lines}\n)\n")
     cloud = target / "constant/kinematicCloudProperties"
     text = cloud.read_text()
     text = re.sub(r"SOI\s+[^;]+;", f"SOI             {start_time:.12g};", text)
-    text = re.sub(r"U0\s+\([^)]*\);", "U0              ({:.12g} {:.12g} {:.12g});".format(*velocity),
-                  text)
     text = re.sub(r"value\s+160e-6;", f"value   {diameter:.12g};", text)
+    velocities = np.asarray(velocities, dtype=float)
+    if velocities.ndim == 1:
+        write_positions(target / "constant/kinematicCloudPositions", positions)
+        text = re.sub(r"U0\s+\([^)]*\);",
+                      "U0              ({:.12g} {:.12g} {:.12g});".format(*velocities), text)
+    else:
+        nozzle = re.search(r"^        nozzle\n        \{\n.*?^        \}\n", text, re.S | re.M).group(0)
+        text = text.replace(nozzle, injection_models(nozzle, positions, velocities,
+                                                     target / "constant") + "\n")
     cloud.write_text(text)
     control = target / "system/controlDict"
     text = control.read_text()
@@ -324,14 +349,12 @@ def random_disc(count, seed):
 
 
 def first_slides_frame(frames):
-    """slides-track's first frame with particles: (time, ids, positions, mean velocity, spread)."""
+    """slides-track's first frame with particles: (time, ids, positions, velocities)."""
     for when, particles in frames:
         moving = {k: v for k, v in particles.items() if v[2] == 0}
         if moving:
             ids = sorted(moving)
             positions = np.array([moving[k][0] for k in ids])
             velocities = np.array([moving[k][1] for k in ids])
-            mean = velocities.mean(axis=0)
-            spread = np.abs(velocities - mean).max()
-            return when, ids, positions, mean, spread
+            return when, ids, positions, velocities
     raise RuntimeError("slides-track wrote no frame with moving particles")
