@@ -43,6 +43,17 @@ TEST_P(HaiderLevenspiel, FollowsStandardDragCurve) {
 
 INSTANTIATE_TEST_SUITE_P(Reynolds, HaiderLevenspiel, testing::ValuesIn(dragPoints));
 
+TEST(PutnamDrag, MatchesOpenFoamSphereDrag) {
+    // OpenFOAM's SphereDragForce::CdRe, written out: 24 (1 + Re^(2/3)/6) below Re = 1000,
+    // 0.424 Re above. Values computed by hand: Re = 8 → Re^(2/3) = 4, Cd = 24·(1 + 4/6)/8 = 5;
+    // Re = 125 → 25, Cd = 24·(1 + 25/6)/125 = 0.992; Re = 8000 → Cd = 0.424.
+    EXPECT_NEAR(dragCoefficient(DragModel::putnam, 8.0), 5.0, 1e-12);
+    EXPECT_NEAR(dragCoefficient(DragModel::putnam, 125.0), 0.992, 1e-12);
+    EXPECT_NEAR(dragCoefficient(DragModel::putnam, 8000.0), 0.424, 1e-12);
+    // The two branches meet at Re = 1000: 1 + 100/6 = 17.667 = 0.424·1000/24.
+    EXPECT_NEAR(dragCorrection(DragModel::putnam, 1000.0), 0.424 * 1000.0 / 24.0, 1e-12);
+}
+
 class DragFamily : public testing::TestWithParam<DragModelName> {};
 
 TEST_P(DragFamily, ReducesToStokesAtLowReynolds) {

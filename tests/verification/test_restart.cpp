@@ -95,10 +95,9 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
                      scratch.path / "reference.log"),
               0);
 
-    const bool killed =
-        killMidRun({scratch.path.string(), "--quiet", "--threads", "2", "--checkpoint-every", "20",
-                    "--output", resumed.string()},
-                   resumed / "checkpoint.h5", std::chrono::milliseconds(delay));
+    const bool killed = killMidRun({scratch.path.string(), "--quiet", "--threads", "2",
+                                    "--checkpoint-every", "20", "--output", resumed.string()},
+                                   resumed / "checkpoint.h5", std::chrono::milliseconds(delay));
     ASSERT_TRUE(killed) << "the run ended before it could be killed: the test proves nothing";
     ASSERT_FALSE(fs::exists(resumed / "summary.json"));
     // What the killed run completed is intact: no temporaries pass for files.

@@ -95,8 +95,9 @@ FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
         for (const int cell : cells)
             if (cell < 0 || cell > faceCount / 2)
                 throw InputError((dir / file).string(), 0, "",
-                                 "cell label " + std::to_string(cell) + " impossible for a mesh of " +
-                                     std::to_string(faceCount) + " faces");
+                                 "cell label " + std::to_string(cell) +
+                                     " impossible for a mesh of " + std::to_string(faceCount) +
+                                     " faces");
     };
     checkCells(mesh.owner, "owner");
     checkCells(mesh.neighbour, "neighbour");

@@ -130,7 +130,7 @@ std::vector<KeyDeclaration> declareKeys() {
 
         {"physics", K::dictionary, "-", "-", {}, R::any, "Forces on the particles."},
         {"physics.drag", K::word, "-", "haiderLevenspiel", namesOf(dragModelNames()), R::any,
-         "Drag law (Eq. 3.17 for haiderLevenspiel)."},
+         "Drag law (Eq. 3.17 for haiderLevenspiel; putnam is OpenFOAM's sphereDrag)."},
         {"physics.gravity", K::vector, "m/s^2", "(0 0 0)", {}, R::any,
          "Gravitational acceleration."},
         {"physics.buoyancy", K::boolean, "-", "on", {}, R::any,

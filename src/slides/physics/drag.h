@@ -1,10 +1,12 @@
 // Drag on a sphere: the correction f(Re) = Cd·Re/24 to Stokes drag, one entry per drag law.
 //
 // Reference: Eq. 3.16–3.17 of the reference (Haider & Levenspiel 1989, Powder Technol. 58:63,
-// sphericity 1); Schiller & Naumann (1933) for comparison; Stokes (1851). With f, the drag
-// acceleration is (u − v)·f/τ_St, τ_St = ρp d²/(18 μ) (Eq. 3.16 divided by the particle mass).
+// sphericity 1); Schiller & Naumann (1933) for comparison; Putnam (1961), the law of OpenFOAM's
+// `sphereDrag` (SphereDragForce::CdRe), for comparisons with OpenFOAM's trackers; Stokes (1851).
+// With f, the drag acceleration is (u − v)·f/τ_St, τ_St = ρp d²/(18 μ) (Eq. 3.16 divided by the
+// particle mass).
 //
-//     physics { drag haiderLevenspiel; }   // stokes | schillerNaumann | haiderLevenspiel
+//     physics { drag haiderLevenspiel; }   // stokes | schillerNaumann | haiderLevenspiel | putnam
 //
 // How to add a drag law: add an enumerator, its name to dragModelNames(), and its case to
 // dragCorrection(); the family test (tests/unit/test_drag.cpp) then checks it automatically.
@@ -16,7 +18,7 @@
 
 namespace slides {
 
-enum class DragModel { stokes, schillerNaumann, haiderLevenspiel };
+enum class DragModel { stokes, schillerNaumann, haiderLevenspiel, putnam };
 
 struct DragModelName {
     DragModel value;
@@ -24,10 +26,11 @@ struct DragModelName {
 };
 
 /// The name table of the drag family, as written in the dictionary.
-constexpr std::array<DragModelName, 3> dragModelNames() {
+constexpr std::array<DragModelName, 4> dragModelNames() {
     return {{{DragModel::stokes, "stokes"},
              {DragModel::schillerNaumann, "schillerNaumann"},
-             {DragModel::haiderLevenspiel, "haiderLevenspiel"}}};
+             {DragModel::haiderLevenspiel, "haiderLevenspiel"},
+             {DragModel::putnam, "putnam"}}};
 }
 
 /// Particle Reynolds number on the diameter and the slip speed |u − v|.
@@ -46,6 +49,10 @@ inline double dragCorrection(DragModel model, double reynolds) {
         // Eq. 3.17: Cd = 24/Re (1 + 0.1806 Re^0.6459) + 0.4251 / (1 + 6880.95/Re).
         return 1.0 + 0.1806 * std::pow(reynolds, 0.6459) +
                reynolds * 0.4251 / (24.0 * (1.0 + 6880.95 / reynolds));
+    case DragModel::putnam:
+        // OpenFOAM sphereDrag: Cd·Re = 24 (1 + Re^(2/3)/6) for Re ≤ 1000, 0.424 Re above.
+        return reynolds > 1000.0 ? 0.424 * reynolds / 24.0
+                                 : 1.0 + std::cbrt(reynolds * reynolds) / 6.0;
     }
     return 1.0;
 }
