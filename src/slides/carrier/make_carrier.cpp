@@ -3,8 +3,30 @@
 #include "slides/carrier/analytic_jet.h"
 #include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/round_laminar_jet.h"
+#include "slides/core/error.h"
+
+#include <array>
+#include <sstream>
 
 namespace slides {
+
+namespace {
+
+/// Particles injected outside the mesh would escape at once: refuse such a case.
+void requireNozzleInMesh(const Scene& scene, const FoamCarrier& carrier) {
+    const std::array<Vec3, 1> centre{scene.nozzle.centre};
+    std::array<std::int32_t, 1> location{-1};
+    CarrierSample sample;
+    carrier.sampleFrom(centre, location, 0.0, CarrierNeeds{}, sample);
+    if (location[0] < -1) {
+        std::ostringstream message;
+        message << "(" << scene.nozzle.centre.transpose()
+                << ") lies outside the OpenFOAM mesh: particles would be injected outside it";
+        throw InputError(scene.dictionaryFile.string(), 0, "nozzle.centre", message.str());
+    }
+}
+
+} // namespace
 
 std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
     const CarrierSettings& carrier = scene.carrier;
@@ -18,9 +40,12 @@ std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
         return std::make_unique<RoundLaminarJet>(
             scene.nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
                                                     carrier.coreLength});
-    case CarrierType::foamField:
-        return std::make_unique<FoamCarrier>(
+    case CarrierType::foamField: {
+        auto field = std::make_unique<FoamCarrier>(
             scene.caseDirectory, FoamCarrierSettings{carrier.foamTime, carrier.interpolation});
+        requireNozzleInMesh(scene, *field);
+        return field;
+    }
     }
     throw std::logic_error("carrier type without a constructor");
 }
