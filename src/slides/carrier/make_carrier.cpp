@@ -19,8 +19,9 @@ void requireNozzleInMesh(const Scene& scene, const FoamCarrier& carrier) {
     CarrierSample sample;
     carrier.sampleFrom(centre, location, 0.0, CarrierNeeds{}, sample);
     if (location[0] < -1) {
+        const Vec3& x = scene.nozzle.centre;
         std::ostringstream message;
-        message << "(" << scene.nozzle.centre.transpose()
+        message << "(" << x.x() << " " << x.y() << " " << x.z()
                 << ") lies outside the OpenFOAM mesh: particles would be injected outside it";
         throw InputError(scene.dictionaryFile.string(), 0, "nozzle.centre", message.str());
     }
