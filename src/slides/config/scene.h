@@ -6,10 +6,13 @@
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/jet_frame.h"
+#include "slides/carrier/jet_scalars.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
+#include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/heat_transfer.h"
 
 #include <array>
 #include <cstdint>
@@ -21,9 +24,11 @@
 namespace slides {
 
 struct FluidSettings {
-    double density = 0;            ///< ρf [kg/m³]
-    double kinematicViscosity = 0; ///< ν [m²/s]
-    double temperature = 0;        ///< [K]
+    double density = 0;             ///< ρf [kg/m³]
+    double kinematicViscosity = 0;  ///< ν [m²/s]
+    double temperature = 0;         ///< [K]
+    double thermalConductivity = 0; ///< K_f [W/(m K)], heat transfer
+    double specificHeat = 0;        ///< c_f [J/(kg K)], heat transfer
 };
 
 enum class CarrierType { analyticJet, roundLaminarJet };
@@ -34,7 +39,8 @@ struct CarrierSettings {
     double nozzleVelocity = 0;                       ///< U0 [m/s]
     double coreLength = 0;                           ///< unentrained core [m]
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
-    std::optional<double> C1, C2, C3; ///< Eq. 5.10/5.11 coefficients when given explicitly
+    std::optional<double> C1, C2, C3;        ///< Eq. 5.10/5.11 coefficients when given explicitly
+    std::optional<JetTurbulence> turbulence; ///< k, ε of the analytic jets (none: laminar)
 };
 
 enum class RadiusDistributionKind { fixed, normal, logNormal };
@@ -65,6 +71,8 @@ struct ParticleSettings {
     double density = 0; ///< ρp [kg/m³]
     RadiusDistribution radius;
     MaterialSettings material;
+    double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
+    double injectionTemperature = 0; ///< θ at injection [K], heat transfer
 };
 
 enum class InjectionMode { rate, allAtStart };
@@ -80,6 +88,9 @@ struct PhysicsSettings {
     DragModel drag = DragModel::haiderLevenspiel;
     Vec3 gravity = Vec3::Zero(); ///< [m/s²]
     bool buoyancy = true;
+    DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
+    DispersionConstants dispersionConstants;
+    HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
 };
 
 struct TimeSettings {

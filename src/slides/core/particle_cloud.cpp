@@ -2,6 +2,17 @@
 
 namespace slides {
 
+namespace {
+
+/// Moves the last entry of a model-state array into index, if the model is on.
+template <typename T> void removeModelState(std::vector<T>& state, std::size_t index) {
+    if (state.empty()) return;
+    state[index] = state.back();
+    state.pop_back();
+}
+
+} // namespace
+
 void ParticleCloud::reserve(std::size_t count) {
     id.reserve(count);
     position.reserve(count);
@@ -29,6 +40,8 @@ void ParticleCloud::removeAt(std::size_t index) {
     position.pop_back();
     velocity.pop_back();
     radius.pop_back();
+    removeModelState(eddy, index);
+    removeModelState(temperature, index);
 }
 
 } // namespace slides

@@ -6,6 +6,7 @@
 // arrays beside these and is moved by the same swap.
 #pragma once
 
+#include "slides/core/eddy_state.h"
 #include "slides/core/vector.h"
 
 #include <cstdint>
@@ -23,6 +24,10 @@ struct ParticleCloud {
     std::vector<Vec3> position; ///< [m]
     std::vector<Vec3> velocity; ///< [m/s]
     std::vector<double> radius; ///< [m]
+    // Model state: empty while its model is off, else one entry per particle (the stepper
+    // fills the entries of particles as they enter).
+    std::vector<EddyState> eddy;     ///< turbulent dispersion (physics/dispersion.h)
+    std::vector<double> temperature; ///< θ [K], heat transfer (physics/heat_transfer.h)
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }

@@ -16,7 +16,10 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
-      injector_(scene) {
+      injector_(scene), needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
+                               .temperature =
+                                   scene.physics.heatTransfer != HeatTransferModel::none},
+      dispersion_(scene), heating_(scene) {
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
 
@@ -38,6 +41,7 @@ void Stepper::step() {
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
     advance(h);
+    heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
     meetSurfaces(h);
     time_ += h;
     ++steps_;
@@ -71,7 +75,8 @@ void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    carrier_.sample(x, time_, CarrierNeeds{}, gas_);
+    carrier_.sample(x, time_, needs_, gas_);
+    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
 
@@ -91,6 +96,7 @@ void Stepper::advance(double h) {
         vm = v;
         advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
         carrier_.sample(xm, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
+        dispersion_.addTo(midpointGas_.velocity);
         advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
                     stepLengths_, 1.0);
         break;
@@ -125,7 +131,8 @@ void Stepper::meetSurfaces(double h) {
             const Vec3& v0 = startVelocities_[i];
             const double arrivalTime = time_ + h - (1 - firstTouch) * stepLengths_[i];
             arrivals_.push_back({cloud_.id[i], touched, arrivalTime, x0 + firstTouch * (x - x0),
-                                 v0 + firstTouch * (v - v0), cloud_.radius[i]});
+                                 v0 + firstTouch * (v - v0), cloud_.radius[i],
+                                 cloud_.temperature.empty() ? 0.0 : cloud_.temperature[i]});
         } else if (insideBox(scene_.domain, x)) {
             continue;
         } else {

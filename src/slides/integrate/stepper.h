@@ -6,9 +6,13 @@
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
 //      steady carriers);
 //   2. the carrier is sampled once for the whole cloud;
+//   2b. with turbulent dispersion, the gas velocity each particle sees gets its time-averaged
+//      eddy fluctuation over the step (integrate/turbulent_dispersion.h);
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
+//   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
+//      (integrate/particle_heating.h);
 //   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
 //      domain box has escaped; both leave the cloud.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
@@ -20,6 +24,8 @@
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injector.h"
+#include "slides/integrate/particle_heating.h"
+#include "slides/integrate/turbulent_dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
 
@@ -54,6 +60,9 @@ private:
     DragParameters drag_;
     Vec3 bodyAcceleration_;
     Injector injector_;
+    CarrierNeeds needs_; ///< k, ε and T when dispersion or heat transfer is on
+    TurbulentDispersion dispersion_;
+    ParticleHeating heating_;
     ParticleCloud cloud_;
     std::vector<Arrival> arrivals_;
     double time_ = 0;

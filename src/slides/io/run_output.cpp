@@ -31,7 +31,8 @@ std::filesystem::path prepared(std::filesystem::path directory) {
 RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
                      const CarrierField& carrier)
     : directory_(prepared(std::move(directory))), series_(directory_ / "particles.pvd"),
-      fields_(scene.output.fields) {
+      fields_(scene.output.fields),
+      heating_(scene.physics.heatTransfer != HeatTransferModel::none) {
     writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
                     scene.output.carrierResolution, 0.0);
 }
@@ -43,17 +44,20 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     velocities_.assign(cloud.velocity.begin(), cloud.velocity.end());
     radii_.assign(cloud.radius.begin(), cloud.radius.end());
     states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
+    temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
     for (const auto& arrival : stepper.arrivals()) {
         ids_.push_back(arrival.id);
         positions_.push_back(arrival.position);
         velocities_.push_back(arrival.velocity);
         radii_.push_back(arrival.radius);
         states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
+        temperatures_.push_back(arrival.temperature);
     }
     char name[32];
     std::snprintf(name, sizeof name, "particles_%06d.vtp", frames_);
-    writeParticlesVtp(directory_ / name,
-                      ParticleFrame{ids_, positions_, velocities_, radii_, states_, fields_});
+    ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
+    if (heating_) frame.temperature = temperatures_;
+    writeParticlesVtp(directory_ / name, frame);
     series_.add(stepper.time(), name);
     ++frames_;
 }
