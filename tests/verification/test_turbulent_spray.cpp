@@ -5,18 +5,22 @@
 //  - Heating: every arrival temperature lies between the gas temperature and the bound of the
 //    slowest possible cooling, Nu = 2 (Nu ≥ 2 for every correlation, Eq. 3.27):
 //    θf < θ ≤ θf + (θ0 − θf) e^(−(t − t_in)/τ_θ(Nu = 2)).
+//  - Output: frames carry a temperature array, the summary arrival temperature statistics.
 //  - Dispersion without k, ε for the analytic jet is an input error naming the key.
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 #include "slides/integrate/stepper.h"
+#include "slides/io/run_output.h"
+#include "slides/io/summary.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace slides {
 namespace {
@@ -92,6 +96,30 @@ TEST(TurbulentSpray, DispersionWidensTheDepositAndHeatingStaysWithinItsBounds) {
                   gas + (600 - gas) * std::exp(-flight / slowest) * (1 + 1e-12))
             << "particle " << arrival.id;
     }
+}
+
+TEST(TurbulentSpray, FramesAndSummaryCarryTheTemperature) {
+    Scene scene = sprayScene(dispersionAndHeat, jetTurbulence);
+    scene.output.carrierResolution = {4, 4, 4};
+    const auto carrier = makeCarrier(scene);
+    Stepper stepper(scene, *carrier);
+    const auto directory = std::filesystem::temp_directory_path() /
+                           ("slides-turbulent-spray-" + std::to_string(::getpid()));
+    {
+        RunOutput output(directory, scene, *carrier);
+        while (!stepper.finished()) stepper.step();
+        output.writeFrame(stepper);
+        const auto summary = runSummary(scene, stepper, RunMetrics{});
+        const auto& temperature = summary["arrivals"]["target"]["temperature"];
+        ASSERT_TRUE(temperature.is_object()) << summary["arrivals"].dump();
+        EXPECT_GT(temperature["min"].get<double>(), scene.fluid.temperature);
+        EXPECT_LT(temperature["max"].get<double>(), 600.0);
+    }
+    std::ifstream frame(directory / "particles_000000.vtp");
+    std::stringstream xml;
+    xml << frame.rdbuf();
+    EXPECT_NE(xml.str().find("Name=\"temperature\""), std::string::npos);
+    std::filesystem::remove_all(directory);
 }
 
 TEST(TurbulentSpray, DispersionWithoutJetTurbulenceIsAnInputError) {
