@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace slides {
@@ -197,6 +198,16 @@ TEST(EddySampling, TracersNeverCrossEddiesHeavyParticlesCrossAfterTheEddyLength)
     // Lifetime endings (a fraction c/T_L ≈ 1e-3 of ~3800 eddies) add a spread of a few eddies.
     EXPECT_NEAR(heavy.count, expected, 4 * std::sqrt(expected * crossing / lagrangianTime) + 1)
         << "expected " << expected << " eddies";
+}
+
+TEST(EddySampling, LaminarGasGivesNoFluctuationAndBrokenInputIsNotHidden) {
+    EddyState state;
+    const ParticleResponse still{Vec3::Zero(), 1e-3, Vec3::Zero()};
+    EXPECT_EQ(eddyInteractionStep(state, constants, 0.0, 0.0, still, 0.1, {1, 1}), Vec3::Zero());
+    EXPECT_EQ(langevinStep(state, constants, 0.0, 0.0, 0.1, {1, 1}), Vec3::Zero());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_FALSE(eddyInteractionStep(state, constants, nan, 1.0, still, 0.1, {1, 1}).allFinite());
+    EXPECT_FALSE(langevinStep(state, constants, 1.0, nan, 0.1, {1, 1}).allFinite());
 }
 
 struct TracerCase {

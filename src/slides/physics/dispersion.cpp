@@ -3,6 +3,7 @@
 #include "slides/core/random.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace slides {
 
@@ -11,9 +12,13 @@ namespace {
 /// A step longer than this many T_L after an eddy ended is finished in one Gaussian piece.
 constexpr double eddiesWalkedPerStep = 50.0;
 
-bool isTurbulent(double k, double epsilon) {
-    return k > 0 && epsilon > 0 && std::isfinite(k) && std::isfinite(epsilon);
-}
+bool isTurbulent(double k, double epsilon) { return k > 0 && epsilon > 0; }
+
+/// A non-finite k or ε gives a non-finite fluctuation, which the stepper reports as an error
+/// naming the particle, instead of passing for laminar gas.
+bool isBroken(double k, double epsilon) { return !std::isfinite(k) || !std::isfinite(epsilon); }
+
+const Vec3 broken = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
 
 Vec3 standardNormalVector(RandomStream& random) {
     const double x = random.normal();
@@ -62,6 +67,7 @@ void drawEddy(EddyState& state, double lagrangianTime, double eddyLength, Random
 Vec3 eddyInteractionStep(EddyState& state, const DispersionConstants& constants, double k,
                          double epsilon, const ParticleResponse& particle, double h,
                          RandomKey key) {
+    if (isBroken(k, epsilon)) return broken;
     if (!isTurbulent(k, epsilon) || !(h > 0)) {
         state.timeLeft = 0; // laminar here: the eddy ends
         return Vec3::Zero();
@@ -108,6 +114,7 @@ Vec3 eddyInteractionStep(EddyState& state, const DispersionConstants& constants,
 
 Vec3 langevinStep(EddyState& state, const DispersionConstants& constants, double k, double epsilon,
                   double h, RandomKey key) {
+    if (isBroken(k, epsilon)) return broken;
     if (!isTurbulent(k, epsilon) || !(h > 0)) return Vec3::Zero();
     const double lagrangianTime = lagrangianTimeScale(constants, k, epsilon);
     RandomStream random(key.seed, key.particleId, RandomPurpose::eddy, state.count++);

@@ -23,7 +23,8 @@
 //   particle (response time τ, body acceleration a): heavy or settling particles cross eddies,
 //   tracers never do.
 // langevin: the continuous random walk du' = −u'/T_L dt + σ √(2/T_L) dW (Ornstein–Uhlenbeck),
-//   no eddy boundaries; advanced exactly over any step.
+//   no eddy boundaries; advanced exactly over any step. It uses the fluid's T_L for every
+//   particle (no crossing-trajectory reduction of the time scale a drifting particle sees).
 //
 // Over a step h the particle is advanced with U + ū', ū' the time average of u' over the step:
 // the eddy sequence is walked in sub-steps (as many eddies as end inside h), and the Langevin
@@ -32,7 +33,8 @@
 // More than 50 T_L of one step (a step far longer than the eddies) are drawn in one piece: a
 // Gaussian of the exact variance of ∫u' dt, without crossing.
 // u' is stored in units of the local σ, so a particle that moves into weaker turbulence sees a
-// weaker fluctuation; where k or ε is 0 the gas is laminar there (u' = 0, the eddy ends).
+// weaker fluctuation; where k or ε is 0 the gas is laminar there (u' = 0, the eddy ends); a
+// non-finite k or ε gives a non-finite u', which the stepper stops on.
 //
 // How to add a model: an enumerator, its name in dispersionModelNames(), its function here and
 // its case in seenGasFluctuation (physics/dispersion.cpp).
