@@ -96,18 +96,21 @@ private:
         }
         const JetTurbulence& input = *turbulence_;
         const JetNozzle& nozzle = jet_->frame().nozzle();
-        const double nozzleVelocity = jet_->centrelineVelocity(0.0);
+        if (input.scaling == TurbulenceScaling::uniform) {
+            const TurbulenceLevel level = turbulenceFromIntensity(
+                input.intensity, jet_->centrelineVelocity(0.0), input.lengthScale);
+            std::fill(out.turbulentKineticEnergy.begin(), out.turbulentKineticEnergy.end(),
+                      level.k);
+            std::fill(out.dissipationRate.begin(), out.dissipationRate.end(), level.epsilon);
+            return;
+        }
         for (std::size_t i = 0; i < points.size(); ++i) {
-            TurbulenceLevel level;
-            if (input.scaling == TurbulenceScaling::uniform) {
-                level = turbulenceFromIntensity(input.intensity, nozzleVelocity, input.lengthScale);
-            } else {
-                const double axial = (points[i] - nozzle.centre).dot(nozzle.axis);
-                if (axial >= 0)
-                    level = turbulenceFromIntensity(
-                        input.intensity, jet_->centrelineVelocity(axial),
-                        input.lengthScaleToHalfWidth * jet_->halfWidth(axial));
-            }
+            const double axial = (points[i] - nozzle.centre).dot(nozzle.axis);
+            TurbulenceLevel level; // at rest behind the exit plane
+            if (axial >= 0)
+                level =
+                    turbulenceFromIntensity(input.intensity, jet_->centrelineVelocity(axial),
+                                            input.lengthScaleToHalfWidth * jet_->halfWidth(axial));
             out.turbulentKineticEnergy[i] = level.k;
             out.dissipationRate[i] = level.epsilon;
         }
