@@ -268,8 +268,8 @@ const BrokenCase brokenCases[] = {
     {"missingSemicolon", "    seed            1;", "    seed            1", 0,
      "key 'injection.seed': missing ';' at the end of the entry"},
     {"unknownOutputField", "    interval            5e-4;",
-     "    interval            5e-4;\n    fields (id speed temperature);", 1,
-     "key 'output.fields': unknown fields 'temperature'; valid fields names are:"},
+     "    interval            5e-4;\n    fields (id speed pressure);", 1,
+     "key 'output.fields': unknown fields 'pressure'; valid fields names are:"},
     {"nozzleOutsideDomain", "    centre      (0 0 0);", "    centre      (1 0 0);", 0,
      "key 'nozzle.centre': lies outside the domain box"},
 };

@@ -1,6 +1,8 @@
 #include "slides/carrier/analytic_jet.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -93,6 +95,11 @@ void AnalyticJet::sample(std::span<const Vec3> points, double /*time: steady*/, 
 double AnalyticJet::centrelineVelocity(double axialDistance) const {
     if (axialDistance < 0) return 0;
     return profile_.C1 / std::cbrt(frame_.similarityCoordinate(axialDistance));
+}
+
+double AnalyticJet::halfWidth(double axialDistance) const {
+    const double s = frame_.similarityCoordinate(std::max(axialDistance, 0.0));
+    return std::acosh(std::numbers::sqrt2) * std::cbrt(s * s) / profile_.C3;
 }
 
 std::string AnalyticJet::describe() const {

@@ -72,6 +72,9 @@ public:
     /// Centreline speed at axial distance a from the exit plane: 0 behind it, U0 in the core,
     /// C1 s^(−1/3) beyond [m/s].
     double centrelineVelocity(double axialDistance) const;
+    /// Half-width y½ where u = u_centre/2 (sech²η = 1/2, η½ = arccosh √2), at axial distance
+    /// a ≥ 0: η½ s^(2/3)/C3 [m].
+    double halfWidth(double axialDistance) const;
 
 private:
     BickleyProfile profile_;

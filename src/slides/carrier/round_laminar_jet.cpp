@@ -1,5 +1,6 @@
 #include "slides/carrier/round_laminar_jet.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -69,6 +70,11 @@ void RoundLaminarJet::sample(std::span<const Vec3> points, double /*time: steady
 double RoundLaminarJet::centrelineVelocity(double axialDistance) const {
     if (axialDistance < 0) return 0;
     return profile_.amplitude / frame_.similarityCoordinate(axialDistance);
+}
+
+double RoundLaminarJet::halfWidth(double axialDistance) const {
+    const double s = frame_.similarityCoordinate(std::max(axialDistance, 0.0));
+    return 2.0 * std::sqrt(std::numbers::sqrt2 - 1.0) * s / profile_.similarity;
 }
 
 std::string RoundLaminarJet::describe() const {

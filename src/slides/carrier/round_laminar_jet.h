@@ -53,6 +53,9 @@ public:
     /// Centreline speed at axial distance a: 0 behind the exit plane, U0 in the core,
     /// 3K/(8πν s) beyond [m/s].
     double centrelineVelocity(double axialDistance) const;
+    /// Half-width r½ where u = u_centre/2 ((1 + ξ²/4)² = 2, ξ½ = 2 √(√2 − 1)), at axial
+    /// distance a ≥ 0: ξ½ s/similarity [m].
+    double halfWidth(double axialDistance) const;
 
 private:
     double momentumFlux_;

@@ -7,10 +7,13 @@
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/jet_frame.h"
+#include "slides/carrier/jet_scalars.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
+#include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/heat_transfer.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
 
@@ -24,9 +27,11 @@
 namespace slides {
 
 struct FluidSettings {
-    double density = 0;            ///< ρf [kg/m³]
-    double kinematicViscosity = 0; ///< ν [m²/s]
-    double temperature = 0;        ///< [K]
+    double density = 0;             ///< ρf [kg/m³]
+    double kinematicViscosity = 0;  ///< ν [m²/s]
+    double temperature = 0;         ///< [K]
+    double thermalConductivity = 0; ///< K_f [W/(m K)], heat transfer
+    double specificHeat = 0;        ///< c_f [J/(kg K)], heat transfer
 };
 
 enum class CarrierType { analyticJet, roundLaminarJet, foamField };
@@ -37,7 +42,8 @@ struct CarrierSettings {
     double nozzleVelocity = 0;                       ///< U0 [m/s]
     double coreLength = 0;                           ///< unentrained core [m]
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
-    std::optional<double> C1, C2, C3; ///< Eq. 5.10/5.11 coefficients when given explicitly
+    std::optional<double> C1, C2, C3;        ///< Eq. 5.10/5.11 coefficients when given explicitly
+    std::optional<JetTurbulence> turbulence; ///< k, ε of the analytic jets (none: laminar)
     // foamField only:
     std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;
@@ -71,6 +77,8 @@ struct ParticleSettings {
     double density = 0; ///< ρp [kg/m³]
     RadiusDistribution radius;
     MaterialSettings material;
+    double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
+    double injectionTemperature = 0; ///< θ at injection [K], heat transfer
 };
 
 enum class InjectionMode { rate, allAtStart };
@@ -93,6 +101,15 @@ struct PhysicsSettings {
     bool pressureGradient = false;
     LiftModel lift = LiftModel::none;
     bool spin = false;
+    DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
+    DispersionConstants dispersionConstants;
+    HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
+
+    /// Whether any unsteady term is on: then the Maxey–Riley step replaces the integrator.
+    bool unsteadyForces() const {
+        return history != HistoryModel::none || addedMass || pressureGradient ||
+               lift != LiftModel::none || spin;
+    }
 };
 
 struct TimeSettings {

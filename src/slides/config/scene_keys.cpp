@@ -3,7 +3,9 @@
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
+#include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/heat_transfer.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
 
@@ -65,12 +67,28 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.foamFieldCoeffs.interpolation", K::word, "-", "cellPoint",
          namesOf(foamInterpolationNames()), R::any,
          "cell: the cell's value; cellPoint: point values, linear within the cell's tetrahedra."},
+        {"carrier.turbulence", K::dictionary, "-", "-", {}, R::any,
+         "Turbulence of the analytic jets, k = 3/2 (I U)², ε = 0.09^(3/4) k^(3/2)/ℓ "
+         "(carrier/jet_scalars.h); without it they are laminar (k = ε = 0)."},
+        {"carrier.turbulence.scaling", K::word, "-", "uniform", {"uniform", "jetLocal"}, R::any,
+         "uniform: U = nozzleVelocity, ℓ = lengthScale everywhere; jetLocal: U = local "
+         "centreline velocity, ℓ = lengthScaleToHalfWidth × local half-width."},
+        {"carrier.turbulence.intensity", K::scalar, "-", "", {}, R::positive,
+         "Turbulence intensity I = u'/U."},
+        {"carrier.turbulence.lengthScale", K::scalar, "m", "-", {}, R::positive,
+         "Mixing length ℓ (scaling uniform)."},
+        {"carrier.turbulence.lengthScaleToHalfWidth", K::scalar, "-", "-", {}, R::positive,
+         "ℓ over the local jet half-width (scaling jetLocal)."},
 
         {"fluid", K::dictionary, "-", "", {}, R::any, "Carrier gas properties."},
         {"fluid.density", K::scalar, "kg/m^3", "", {}, R::positive, "Gas density ρf."},
         {"fluid.kinematicViscosity", K::scalar, "m^2/s", "", {}, R::positive,
          "Gas kinematic viscosity ν."},
         {"fluid.temperature", K::scalar, "K", "293.15", {}, R::positive, "Gas temperature."},
+        {"fluid.thermalConductivity", K::scalar, "W/(m K)", "0.0257", {}, R::positive,
+         "Gas thermal conductivity K_f, for heat transfer (default: air at 293 K)."},
+        {"fluid.specificHeat", K::scalar, "J/(kg K)", "1005", {}, R::positive,
+         "Gas specific heat c_f, for the Prandtl number (default: air)."},
 
         {"nozzle", K::dictionary, "-", "", {}, R::any, "The nozzle the gas and particles leave."},
         {"nozzle.centre", K::vector, "m", "(0 0 0)", {}, R::any, "Centre of the nozzle exit."},
@@ -115,6 +133,10 @@ std::vector<KeyDeclaration> declareKeys() {
          "Yield stress."},
         {"particles.material.surfaceEnergy", K::scalar, "J/m^2", "-", {}, R::positive,
          "Surface energy γ (Eq. 2.74)."},
+        {"particles.specificHeat", K::scalar, "J/(kg K)", "-", {}, R::positive,
+         "Particle specific heat c_p; required by physics.heatTransfer."},
+        {"particles.injectionTemperature", K::scalar, "K", "-", {}, R::positive,
+         "Particle temperature at injection; default fluid.temperature."},
 
         {"injection", K::dictionary, "-", "", {}, R::any,
          "Particles start on the nozzle disc with the local gas velocity plus a random "
@@ -149,6 +171,20 @@ std::vector<KeyDeclaration> declareKeys() {
          "Saffman–Mei shear lift and/or Magnus spin lift (physics/lift.h); magnus needs spin."},
         {"physics.spin", K::boolean, "-", "off", {}, R::any,
          "Particle spin under the viscous torque of Eq. 3.18, relaxing to half the vorticity."},
+        {"physics.dispersion", K::dictionary, "-", "-", {}, R::any,
+         "Turbulent dispersion (Section 3.9, physics/dispersion.h); needs k, ε from the carrier."},
+        {"physics.dispersion.model", K::word, "-", "none", namesOf(dispersionModelNames()),
+         R::any,
+         "eddyInteraction: Gosman–Ioannides eddies with exponential lifetimes; langevin: "
+         "continuous random walk."},
+        {"physics.dispersion.Cmu", K::scalar, "-", "0.09", {}, R::positive,
+         "k-ε C_μ: eddy length C_μ^(3/4) k^(3/2)/ε and, with Sc_t, the time scale T_L."},
+        {"physics.dispersion.turbulentSchmidtNumber", K::scalar, "-", "0.7", {}, R::positive,
+         "Sc_t: T_L = 3 C_μ k/(2 Sc_t ε), so the tracer diffusivity (2k/3) T_L is ν_t/Sc_t."},
+        {"physics.heatTransfer", K::dictionary, "-", "-", {}, R::any,
+         "Convective heating of the particles (Section 3.8, physics/heat_transfer.h)."},
+        {"physics.heatTransfer.model", K::word, "-", "none", namesOf(heatTransferModelNames()),
+         R::any, "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28)."},
 
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "", {}, R::positive, "Time step."},
@@ -187,8 +223,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Time between particle frames (particles_NNNNNN.vtp)."},
         {"output.carrierResolution", K::integerTriple, "-", "(96 48 48)", {}, R::atLeastOne,
          "Lattice points per axis of carrier.vti over the domain."},
-        {"output.fields", K::wordList, "-", "(id diameter velocity speed state)",
-         namesOf(particleFieldNames()), R::any, "Point arrays of each particle frame."},
+        {"output.fields", K::wordList, "-", "(id diameter velocity speed state temperature)",
+         namesOf(particleFieldNames()), R::any,
+         "Point arrays of each particle frame; temperature only with physics.heatTransfer."},
         {"output.hdf5", K::boolean, "-", "yes", {}, R::any,
          "Also write every frame and the arrivals to particles.h5, indexed by particles.xmf."},
     };

@@ -266,6 +266,43 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
     return material;
 }
 
+std::optional<JetTurbulence> readJetTurbulence(const KeyReader& keys) {
+    const std::string base = "carrier.turbulence.";
+    if (!keys.has("carrier.turbulence")) return std::nullopt;
+    JetTurbulence turbulence;
+    turbulence.intensity = keys.scalar(base + "intensity");
+    if (keys.word(base + "scaling") == "uniform") {
+        keys.require(base + "lengthScale", "for scaling uniform");
+        turbulence.lengthScale = keys.scalar(base + "lengthScale");
+    } else {
+        keys.require(base + "lengthScaleToHalfWidth", "for scaling jetLocal");
+        turbulence.scaling = TurbulenceScaling::jetLocal;
+        turbulence.lengthScaleToHalfWidth = keys.scalar(base + "lengthScaleToHalfWidth");
+    }
+    return turbulence;
+}
+
+/// physics.dispersion and physics.heatTransfer with what they need from the other sections.
+void readDispersionAndHeat(const KeyReader& keys, Scene& scene) {
+    PhysicsSettings& physics = scene.physics;
+    physics.dispersion = *valueNamed(dispersionModelNames(), keys.word("physics.dispersion.model"));
+    physics.dispersionConstants.Cmu = keys.scalar("physics.dispersion.Cmu");
+    physics.dispersionConstants.turbulentSchmidtNumber =
+        keys.scalar("physics.dispersion.turbulentSchmidtNumber");
+    if (physics.dispersion != DispersionModel::none)
+        keys.require("carrier.turbulence", "by physics.dispersion (k and ε of an analytic jet)");
+    physics.heatTransfer =
+        *valueNamed(heatTransferModelNames(), keys.word("physics.heatTransfer.model"));
+    scene.fluid.thermalConductivity = keys.scalar("fluid.thermalConductivity");
+    scene.fluid.specificHeat = keys.scalar("fluid.specificHeat");
+    scene.particles.injectionTemperature =
+        keys.optionalScalar("particles.injectionTemperature").value_or(scene.fluid.temperature);
+    if (physics.heatTransfer != HeatTransferModel::none) {
+        keys.require("particles.specificHeat", "by physics.heatTransfer");
+        scene.particles.specificHeat = keys.scalar("particles.specificHeat");
+    }
+}
+
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     CarrierSettings carrier;
     const std::string type = keys.word("carrier.type");
@@ -283,6 +320,7 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     carrier.coreLength = keys.scalar(coeffs + ".coreLength");
     carrier.viscosity =
         keys.optionalScalar(coeffs + ".effectiveViscosity").value_or(fluid.kinematicViscosity);
+    carrier.turbulence = readJetTurbulence(keys);
     if (carrier.type == CarrierType::analyticJet) {
         carrier.profile = keys.word(coeffs + ".profile") == "planar" ? JetGeometry::planar
                                                                      : JetGeometry::axisymmetric;
@@ -378,6 +416,13 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.spin = keys.boolean("physics.spin");
     if (usesSpinLift(scene.physics.lift) && !scene.physics.spin)
         keys.fail("physics.lift", "magnus lift needs the particle spin: set physics.spin on");
+    readDispersionAndHeat(keys, scene);
+    if (scene.physics.unsteadyForces() && (scene.physics.dispersion != DispersionModel::none ||
+                                           scene.physics.heatTransfer != HeatTransferModel::none))
+        keys.fail(scene.physics.dispersion != DispersionModel::none ? "physics.dispersion.model"
+                                                                    : "physics.heatTransfer.model",
+                  "cannot yet be combined with the unsteady forces (history, addedMass, "
+                  "pressureGradient, lift, spin)");
 
     scene.time.dt = keys.scalar("time.dt");
     scene.time.endTime = keys.scalar("time.endTime");
@@ -408,6 +453,9 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     for (const auto& name : keys.wordList("output.fields"))
         scene.output.fields.add(*valueNamed(particleFieldNames(), name));
     scene.output.hdf5 = keys.boolean("output.hdf5");
+    if (keys.has("output.fields") && scene.output.fields.contains(ParticleField::temperature) &&
+        scene.physics.heatTransfer == HeatTransferModel::none)
+        keys.fail("output.fields", "temperature needs physics.heatTransfer.model");
     return scene;
 }
 

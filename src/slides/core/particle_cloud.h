@@ -6,6 +6,7 @@
 // arrays beside these and is moved by the same swap.
 #pragma once
 
+#include "slides/core/eddy_state.h"
 #include "slides/core/vector.h"
 
 #include <cstdint>
@@ -29,6 +30,10 @@ struct ParticleCloud {
     /// with it; empty when no model keeps state.
     std::vector<double> modelState;
     std::size_t stateWidth = 0;
+    // Model state: empty while its model is off, else one entry per particle (the stepper
+    // fills the entries of particles as they enter).
+    std::vector<EddyState> eddy;     ///< turbulent dispersion (physics/dispersion.h)
+    std::vector<double> temperature; ///< θ [K], heat transfer (physics/heat_transfer.h)
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -49,6 +54,8 @@ struct ParticleCloud {
         visit("velocity", cloud.velocity);
         visit("radius", cloud.radius);
         visit("carrierLocation", cloud.carrierLocation);
+        visit("eddy", cloud.eddy);
+        visit("temperature", cloud.temperature);
     }
 };
 

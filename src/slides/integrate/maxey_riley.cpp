@@ -8,10 +8,7 @@
 
 namespace slides {
 
-bool MaxeyRileyStepper::needed(const PhysicsSettings& physics) {
-    return physics.history != HistoryModel::none || physics.addedMass || physics.pressureGradient ||
-           physics.lift != LiftModel::none || physics.spin;
-}
+bool MaxeyRileyStepper::needed(const PhysicsSettings& physics) { return physics.unsteadyForces(); }
 
 MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     : scene_(scene), drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,

@@ -16,7 +16,10 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
-      injector_(scene) {
+      injector_(scene), needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
+                               .temperature =
+                                   scene.physics.heatTransfer != HeatTransferModel::none},
+      dispersion_(scene), heating_(scene) {
     if (MaxeyRileyStepper::needed(scene.physics)) {
         maxeyRiley_.emplace(scene);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
@@ -60,6 +63,7 @@ void Stepper::step() {
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
     advance(h);
+    heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
     meetSurfaces(h);
     time_ += h;
     ++steps_;
@@ -94,7 +98,8 @@ void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    sampleCarrier(x, cloud_.carrierLocation, time_, gas_);
+    sampleCarrier(x, cloud_.carrierLocation, time_, needs_, gas_);
+    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
 
@@ -114,7 +119,8 @@ void Stepper::advance(double h) {
         vm = v;
         advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
         midpointLocations_ = cloud_.carrierLocation;
-        sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, midpointGas_);
+        sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
+        dispersion_.addTo(midpointGas_.velocity);
         advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
                     stepLengths_, 1.0);
         break;
@@ -123,11 +129,11 @@ void Stepper::advance(double h) {
 }
 
 void Stepper::sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
-                            double time, CarrierSample& out) const {
+                            double time, CarrierNeeds needs, CarrierSample& out) const {
     if (carrier_.keepsLocations())
-        carrier_.sampleFrom(points, locations, time, CarrierNeeds{}, out);
+        carrier_.sampleFrom(points, locations, time, needs, out);
     else
-        carrier_.sample(points, time, CarrierNeeds{}, out);
+        carrier_.sample(points, time, needs, out);
 }
 
 void Stepper::meetSurfaces(double h) {
@@ -157,7 +163,8 @@ void Stepper::meetSurfaces(double h) {
             const Vec3& v0 = startVelocities_[i];
             const double arrivalTime = time_ + h - (1 - firstTouch) * stepLengths_[i];
             arrivals_.push_back({cloud_.id[i], touched, arrivalTime, x0 + firstTouch * (x - x0),
-                                 v0 + firstTouch * (v - v0), cloud_.radius[i]});
+                                 v0 + firstTouch * (v - v0), cloud_.radius[i],
+                                 cloud_.temperature.empty() ? 0.0 : cloud_.temperature[i]});
         } else if (insideBox(scene_.domain, x) &&
                    (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1)) {
             continue; // a location below −1 left the mesh at the step's start

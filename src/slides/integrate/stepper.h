@@ -6,11 +6,15 @@
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
 //      steady carriers);
 //   2. the carrier is sampled once for the whole cloud;
+//   2b. with turbulent dispersion, the gas velocity each particle sees gets its time-averaged
+//      eddy fluctuation over the step (integrate/turbulent_dispersion.h);
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
 //      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator;
+//   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
+//      (integrate/particle_heating.h);
 //   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
 //      domain box, or the carrier's mesh, has escaped; both leave the cloud.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
@@ -23,6 +27,8 @@
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injector.h"
 #include "slides/integrate/maxey_riley.h"
+#include "slides/integrate/particle_heating.h"
+#include "slides/integrate/turbulent_dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
 
@@ -69,13 +75,16 @@ private:
     void meetSurfaces(double h);
     /// The carrier at points, from and updating their locations when the carrier keeps them.
     void sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
-                       double time, CarrierSample& out) const;
+                       double time, CarrierNeeds needs, CarrierSample& out) const;
 
     const Scene& scene_;
     const CarrierField& carrier_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;
     Injector injector_;
+    CarrierNeeds needs_; ///< k, ε and T when dispersion or heat transfer is on
+    TurbulentDispersion dispersion_;
+    ParticleHeating heating_;
     ParticleCloud cloud_;
     std::vector<Arrival> arrivals_;
     double time_ = 0;

@@ -57,6 +57,18 @@ void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
                       {reinterpret_cast<const double*>(values.data()), 3 * values.size()}, 3, "SI");
 }
 
+/// An eddy state as six numbers: the standardised fluctuation, time and length left, and the
+/// event counter (exact as a double below 2⁵³).
+void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
+                 const std::vector<EddyState>& values) {
+    std::vector<double> flat;
+    for (const EddyState& eddy : values)
+        flat.insert(flat.end(),
+                    {eddy.standardised.x(), eddy.standardised.y(), eddy.standardised.z(),
+                     eddy.timeLeft, eddy.lengthLeft, static_cast<double>(eddy.count)});
+    file.writeDataset(parent, name, flat, 6, "SI");
+}
+
 void readColumn(const Hdf5File& file, const std::string& path, std::vector<std::uint64_t>& out) {
     out = file.readUInt64(path);
 }
@@ -66,6 +78,15 @@ void readColumn(const Hdf5File& file, const std::string& path, std::vector<std::
 void readColumn(const Hdf5File& file, const std::string& path, std::vector<double>& out) {
     out = file.readDoubles(path, 1);
 }
+void readColumn(const Hdf5File& file, const std::string& path, std::vector<EddyState>& out) {
+    const auto flat = file.readDoubles(path, 6);
+    out.resize(flat.size() / 6);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const double* e = &flat[6 * i];
+        out[i] = {Vec3(e[0], e[1], e[2]), e[3], e[4], static_cast<std::uint32_t>(e[5])};
+    }
+}
+
 void readColumn(const Hdf5File& file, const std::string& path, std::vector<Vec3>& out) {
     const auto flat = file.readDoubles(path, 3);
     out.resize(flat.size() / 3);
@@ -77,7 +98,7 @@ void readColumn(const Hdf5File& file, const std::string& path, std::vector<Vec3>
 struct ArrivalColumns {
     std::vector<std::uint64_t> id;
     std::vector<std::int32_t> surface;
-    std::vector<double> time, radius;
+    std::vector<double> time, radius, temperature;
     std::vector<Vec3> position, velocity;
 
     template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
@@ -87,6 +108,7 @@ struct ArrivalColumns {
         visit("position", c.position);
         visit("velocity", c.velocity);
         visit("radius", c.radius);
+        visit("temperature", c.temperature);
     }
 };
 
@@ -121,6 +143,7 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
         arrivals.radius.push_back(arrival.radius);
         arrivals.position.push_back(arrival.position);
         arrivals.velocity.push_back(arrival.velocity);
+        arrivals.temperature.push_back(arrival.temperature);
     }
     const Hdf5Handle arrived = file.createGroup(std::string(group) + "/arrivals");
     ArrivalColumns::forEach(arrivals, [&](const char* name, const auto& array) {
@@ -184,7 +207,7 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
     for (std::size_t i = 0; i < arrivals.id.size(); ++i)
         state.arrivals.push_back({arrivals.id[i], arrivals.surface.at(i), arrivals.time.at(i),
                                   arrivals.position.at(i), arrivals.velocity.at(i),
-                                  arrivals.radius.at(i)});
+                                  arrivals.radius.at(i), arrivals.temperature.at(i)});
     const auto frameTimes = file.readDoubles(g + "/frameTimes", 1);
     const auto frameCounts = file.readUInt64(g + "/frameCounts");
     if (frameTimes.size() != frameCounts.size()) refuse(file.path(), "damaged: frame lists differ");

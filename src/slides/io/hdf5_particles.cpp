@@ -50,7 +50,8 @@ std::filesystem::path ParticlesHdf5::partialFile() const { return partialPath(di
 void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     const std::size_t count = frame.id.size();
     if (frame.position.size() != count || frame.velocity.size() != count ||
-        frame.radius.size() != count || frame.state.size() != count)
+        frame.radius.size() != count || frame.state.size() != count ||
+        (frame.temperature && frame.temperature->size() != count))
         throw std::invalid_argument("particle frame arrays differ in length");
     const std::string group = frameGroup(frames_.size());
     const Hdf5File& file = *file_;
@@ -73,8 +74,12 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
         file.writeDataset(g, "speed", scratch_, 1, "m/s");
     }
     if (has(ParticleField::state)) file.writeDataset(g, "state", frame.state, "1");
+    if (frame.temperature && has(ParticleField::temperature))
+        file.writeDataset(g, "temperature", *frame.temperature, 1, "K");
     file.flush();
-    frames_.push_back({group, time, count, frame.fields});
+    frames_.push_back(
+        {group, time, count,
+         frame.temperature ? frame.fields : frame.fields.without(ParticleField::temperature)});
 }
 
 void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {

@@ -13,6 +13,7 @@
 //       diameter   float64 (N)     [m]
 //       speed      float64 (N)     [m/s]
 //       state      int32 (N)       0 moving, 1 arrived (frozen where it touched)
+//       temperature float64 (N)    [K], with heat transfer
 //   /arrivals            written when the run ends, one row per particle that reached a
 //                        surface: id, surface (index into the case's surfaces), time [s],
 //                        position [m], velocity [m/s], diameter [m]

@@ -51,14 +51,17 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
                      const CarrierField& carrier, const std::vector<FrameRecord>* resumed)
     : directory_(
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
-      series_(directory_ / "particles.pvd"), fields_(scene.output.fields) {
+      series_(directory_ / "particles.pvd"), fields_(scene.output.fields),
+      heating_(scene.physics.heatTransfer != HeatTransferModel::none) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
         for (std::size_t n = 0; n < frames_.size(); ++n)
             series.emplace_back(frames_[n].time, frameFileName(n));
         series_.resume(series);
-        if (scene.output.hdf5) hdf5_.emplace(directory_, frames_, fields_);
+        if (scene.output.hdf5)
+            hdf5_.emplace(directory_, frames_,
+                          heating_ ? fields_ : fields_.without(ParticleField::temperature));
     } else if (scene.output.hdf5) {
         hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
     }
@@ -78,15 +81,18 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     velocities_.assign(cloud.velocity.begin(), cloud.velocity.end());
     radii_.assign(cloud.radius.begin(), cloud.radius.end());
     states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
+    temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
     for (const auto& arrival : stepper.arrivals()) {
         ids_.push_back(arrival.id);
         positions_.push_back(arrival.position);
         velocities_.push_back(arrival.velocity);
         radii_.push_back(arrival.radius);
         states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
+        temperatures_.push_back(arrival.temperature);
     }
     const std::string name = frameFileName(frames_.size());
-    const ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
+    ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
+    if (heating_) frame.temperature = temperatures_;
     writeParticlesVtp(directory_ / name, frame);
     if (hdf5_) hdf5_->writeFrame(stepper.time(), frame);
     series_.add(stepper.time(), name);

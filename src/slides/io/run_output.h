@@ -54,6 +54,8 @@ private:
     std::vector<Vec3> velocities_;
     std::vector<double> radii_;
     std::vector<std::int32_t> states_;
+    bool heating_;                     ///< particles carry a temperature
+    std::vector<double> temperatures_; ///< [K], with heat transfer
 };
 
 } // namespace slides

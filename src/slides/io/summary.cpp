@@ -41,7 +41,7 @@ nlohmann::json statistics(const std::vector<double>& values) {
 
 nlohmann::json arrivalsAt(const Scene& scene, const Stepper& stepper, int surface) {
     const PlaneSurface& plane = scene.surfaces[static_cast<std::size_t>(surface)];
-    std::vector<double> impactSpeed, normalSpeed, distanceFromAxis, time;
+    std::vector<double> impactSpeed, normalSpeed, distanceFromAxis, time, temperature;
     for (const auto& arrival : stepper.arrivals()) {
         if (arrival.surface != surface) continue;
         impactSpeed.push_back(arrival.velocity.norm());
@@ -50,12 +50,16 @@ nlohmann::json arrivalsAt(const Scene& scene, const Stepper& stepper, int surfac
         distanceFromAxis.push_back(
             (fromNozzle - fromNozzle.dot(scene.nozzle.axis) * scene.nozzle.axis).norm());
         time.push_back(arrival.time);
+        temperature.push_back(arrival.temperature);
     }
-    return {{"count", impactSpeed.size()},
-            {"impactSpeed", statistics(impactSpeed)},
-            {"impactNormalSpeed", statistics(normalSpeed)},
-            {"distanceFromAxis", statistics(distanceFromAxis)},
-            {"arrivalTime", statistics(time)}};
+    nlohmann::json result = {{"count", impactSpeed.size()},
+                             {"impactSpeed", statistics(impactSpeed)},
+                             {"impactNormalSpeed", statistics(normalSpeed)},
+                             {"distanceFromAxis", statistics(distanceFromAxis)},
+                             {"arrivalTime", statistics(time)}};
+    if (scene.physics.heatTransfer != HeatTransferModel::none)
+        result["temperature"] = statistics(temperature);
+    return result;
 }
 
 } // namespace
@@ -79,6 +83,13 @@ nlohmann::json sceneSettings(const Scene& scene) {
                            {"nozzleVelocity", carrier.nozzleVelocity},
                            {"coreLength", carrier.coreLength},
                            {"viscosity", carrier.viscosity}};
+    if (carrier.turbulence)
+        settings["carrier"]["turbulence"] = {
+            {"scaling",
+             carrier.turbulence->scaling == TurbulenceScaling::uniform ? "uniform" : "jetLocal"},
+            {"intensity", carrier.turbulence->intensity},
+            {"lengthScale", carrier.turbulence->lengthScale},
+            {"lengthScaleToHalfWidth", carrier.turbulence->lengthScaleToHalfWidth}};
     const RadiusDistribution& radius = scene.particles.radius;
     const char* radiusKinds[] = {"fixed", "normal", "logNormal"};
     settings["particles"] = {
@@ -95,16 +106,27 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"rate", scene.injection.rate},
         {"crossSpanSpeed", scene.injection.crossSpanSpeed},
         {"seed", scene.injection.seed}};
-    settings["physics"] = {{"drag", nameOf(dragModelNames(), scene.physics.drag)},
-                           {"gravity", vec(scene.physics.gravity)},
-                           {"buoyancy", scene.physics.buoyancy},
-                           {"history",
-                            {{"model", nameOf(historyModelNames(), scene.physics.history)},
-                             {"accuracy", scene.physics.historyAccuracy}}},
-                           {"addedMass", scene.physics.addedMass},
-                           {"pressureGradient", scene.physics.pressureGradient},
-                           {"lift", nameOf(liftModelNames(), scene.physics.lift)},
-                           {"spin", scene.physics.spin}};
+    settings["physics"] = {
+        {"drag", nameOf(dragModelNames(), scene.physics.drag)},
+        {"gravity", vec(scene.physics.gravity)},
+        {"buoyancy", scene.physics.buoyancy},
+        {"history",
+         {{"model", nameOf(historyModelNames(), scene.physics.history)},
+          {"accuracy", scene.physics.historyAccuracy}}},
+        {"addedMass", scene.physics.addedMass},
+        {"pressureGradient", scene.physics.pressureGradient},
+        {"lift", nameOf(liftModelNames(), scene.physics.lift)},
+        {"spin", scene.physics.spin},
+        {"dispersion",
+         {{"model", nameOf(dispersionModelNames(), scene.physics.dispersion)},
+          {"Cmu", scene.physics.dispersionConstants.Cmu},
+          {"turbulentSchmidtNumber", scene.physics.dispersionConstants.turbulentSchmidtNumber}}},
+        {"heatTransfer",
+         {{"model", nameOf(heatTransferModelNames(), scene.physics.heatTransfer)},
+          {"fluidThermalConductivity", scene.fluid.thermalConductivity},
+          {"fluidSpecificHeat", scene.fluid.specificHeat},
+          {"particleSpecificHeat", scene.particles.specificHeat},
+          {"injectionTemperature", scene.particles.injectionTemperature}}}};
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},

@@ -19,7 +19,8 @@ namespace slides {
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame) {
     const std::size_t size = frame.id.size();
     if (frame.position.size() != size || frame.velocity.size() != size ||
-        frame.radius.size() != size || frame.state.size() != size)
+        frame.radius.size() != size || frame.state.size() != size ||
+        (frame.temperature && frame.temperature->size() != size))
         throw std::invalid_argument("writeParticlesVtp: the frame's arrays differ in length");
     const auto count = static_cast<vtkIdType>(size);
     vtkNew<vtkPoints> points;
@@ -58,6 +59,12 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     add(ParticleField::velocity, velocity);
     add(ParticleField::speed, speed);
     add(ParticleField::state, state);
+    if (frame.temperature) {
+        auto temperature = namedDoubleArray("temperature", 1, count);
+        for (vtkIdType i = 0; i < count; ++i)
+            temperature->SetValue(i, (*frame.temperature)[static_cast<std::size_t>(i)]);
+        add(ParticleField::temperature, temperature);
+    }
     data->SetActiveScalars("speed");
     data->SetActiveVectors("velocity");
 

@@ -3,7 +3,8 @@
 //
 // Point arrays (those in the frame's field set, io/particle_fields.h): id (Int64), diameter [m],
 // velocity [m/s] (3 components), speed [m/s], state (Int32, ParticleState: 0 active,
-// 1 arrived, 2 escaped); speed is the active scalar when written.
+// 1 arrived, 2 escaped), temperature [K] (only when the frame has temperatures: heat transfer
+// on); speed is the active scalar when written.
 // Binary, zlib-compressed, appended. A frame without particles is a valid empty dataset.
 #pragma once
 
@@ -12,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 
 namespace slides {
@@ -24,6 +26,7 @@ struct ParticleFrame {
     std::span<const double> radius;                    ///< [m]
     std::span<const std::int32_t> state;               ///< ParticleState values
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
+    std::optional<std::span<const double>> temperature = std::nullopt; ///< [K]; none: no heating
 };
 
 /// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and

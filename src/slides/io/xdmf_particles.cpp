@@ -22,6 +22,7 @@ constexpr XdmfArray xdmfArrays[] = {
     {ParticleField::velocity, "velocity", "Vector", "Float", 8, 3},
     {ParticleField::speed, "speed", "Scalar", "Float", 8, 1},
     {ParticleField::state, "state", "Scalar", "Int", 4, 1},
+    {ParticleField::temperature, "temperature", "Scalar", "Float", 8, 1},
 };
 
 std::string dimensions(std::size_t count, int components) {

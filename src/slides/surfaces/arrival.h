@@ -7,11 +7,12 @@ namespace slides {
 
 struct Arrival {
     ParticleId id = 0;
-    int surface = 0;   ///< index into Scene::surfaces
-    double time = 0;   ///< [s]
-    Vec3 position;     ///< centre at first touch [m]
-    Vec3 velocity;     ///< impact velocity [m/s]
-    double radius = 0; ///< [m]
+    int surface = 0;        ///< index into Scene::surfaces
+    double time = 0;        ///< [s]
+    Vec3 position;          ///< centre at first touch [m]
+    Vec3 velocity;          ///< impact velocity [m/s]
+    double radius = 0;      ///< [m]
+    double temperature = 0; ///< [K] at the end of the arrival step; 0 without heat transfer
 };
 
 } // namespace slides

@@ -1,0 +1,39 @@
+#include "slides/integrate/particle_heating.h"
+
+#include "slides/physics/drag.h"
+
+#include <cstddef>
+
+namespace slides {
+
+ParticleHeating::ParticleHeating(const Scene& scene)
+    : model_(scene.physics.heatTransfer),
+      prandtl_(prandtlNumber(scene.fluid.density, scene.fluid.kinematicViscosity,
+                             scene.fluid.specificHeat, scene.fluid.thermalConductivity)),
+      kinematicViscosity_(scene.fluid.kinematicViscosity),
+      thermalConductivity_(scene.fluid.thermalConductivity),
+      particleDensity_(scene.particles.density),
+      particleSpecificHeat_(scene.particles.specificHeat),
+      injectionTemperature_(scene.particles.injectionTemperature) {}
+
+void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
+                              const std::vector<Vec3>& startVelocities,
+                              const std::vector<double>& stepLengths) const {
+    if (!on()) return;
+    cloud.temperature.resize(cloud.size(), injectionTemperature_); // new particles
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t n = 0; n < count; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        const double radius = cloud.radius[i];
+        const double reynolds = particleReynolds((gas.velocity[i] - startVelocities[i]).norm(),
+                                                 radius, kinematicViscosity_);
+        const double responseTime =
+            thermalResponseTime(particleDensity_, particleSpecificHeat_, radius,
+                                nusseltNumber(model_, reynolds, prandtl_), thermalConductivity_);
+        cloud.temperature[i] = relaxTemperature(cloud.temperature[i], gas.temperature[i],
+                                                responseTime, stepLengths[i]);
+    }
+}
+
+} // namespace slides

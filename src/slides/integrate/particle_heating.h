@@ -1,0 +1,42 @@
+// ParticleHeating: the step loop's use of the heat-transfer models (physics/heat_transfer.h) —
+// after the kinematic step, each particle's lumped temperature relaxes toward the gas
+// temperature over its step, exactly for T_gas and τ_θ frozen at their step-start values.
+//
+//     physics { heatTransfer { model ranzMarshall; } }   // none: this does nothing
+//
+// Re = 2R |u − v|/ν uses the gas velocity the particle saw (with the turbulent fluctuation) and
+// its velocity at the step start; T_gas is the carrier's temperature at the step-start
+// position. Newly injected particles start at particles.injectionTemperature.
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/config/scene.h"
+#include "slides/core/particle_cloud.h"
+
+#include <vector>
+
+namespace slides {
+
+class ParticleHeating {
+public:
+    explicit ParticleHeating(const Scene& scene);
+
+    bool on() const { return model_ != HeatTransferModel::none; }
+
+    /// Advances every particle's temperature over stepLengths[i]; gas holds U (as seen) and T
+    /// at the step-start positions, startVelocities the particle velocities there.
+    void advance(ParticleCloud& cloud, const CarrierSample& gas,
+                 const std::vector<Vec3>& startVelocities,
+                 const std::vector<double>& stepLengths) const;
+
+private:
+    HeatTransferModel model_;
+    double prandtl_;
+    double kinematicViscosity_;
+    double thermalConductivity_;
+    double particleDensity_;
+    double particleSpecificHeat_;
+    double injectionTemperature_;
+};
+
+} // namespace slides

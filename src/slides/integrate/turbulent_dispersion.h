@@ -1,0 +1,44 @@
+// TurbulentDispersion: the step loop's use of the dispersion models (physics/dispersion.h) —
+// the gas velocity each particle sees over its step becomes U + ū', ū' the time average of its
+// fluctuation over the step, walked through as many eddies as end inside the step.
+//
+//     physics { dispersion { model eddyInteraction; } }   // none: this does nothing
+//
+// The stepper samples the carrier (U, k, ε) at the step start, calls perturb() once, which
+// gives newly injected particles a fresh eddy state and adds ū' to the sampled velocities, and
+// adds the same ū' to its second, midpoint sample (addTo). The eddy crossing uses the
+// particle's drag response τ (physics/drag.h) at its step-start slip and the body
+// acceleration. Random numbers: stream (injection.seed, particle id, eddy, eddy counter), so
+// the result does not depend on the thread count and is the same after a restart.
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/config/scene.h"
+#include "slides/core/particle_cloud.h"
+#include "slides/physics/drag.h"
+
+#include <vector>
+
+namespace slides {
+
+class TurbulentDispersion {
+public:
+    explicit TurbulentDispersion(const Scene& scene);
+
+    bool on() const { return model_ != DispersionModel::none; }
+
+    /// For each particle i over its step stepLengths[i]: advances its eddy state and adds ū'
+    /// to gas.velocity[i] (gas holds U, k, ε at the particles).
+    void perturb(ParticleCloud& cloud, CarrierSample& gas, const std::vector<double>& stepLengths,
+                 const DragParameters& drag, const Vec3& bodyAcceleration);
+    /// Adds the ū' of the last perturb() to another sample at the same particles.
+    void addTo(std::vector<Vec3>& gasVelocity) const;
+
+private:
+    DispersionModel model_;
+    DispersionConstants constants_;
+    std::uint64_t seed_;
+    std::vector<Vec3> fluctuations_; ///< ū' of the current step, one per particle
+};
+
+} // namespace slides
