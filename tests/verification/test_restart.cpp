@@ -27,17 +27,36 @@ using test::runCli;
 using test::ScratchDirectory;
 using test::slurp;
 
-/// The default case copied into scratch, so tests may edit its dictionary; with
-/// unsteadyForces, every unsteady force on (per-particle history state to checkpoint).
-void copyDefaultCase(const ScratchDirectory& scratch, bool unsteadyForces = false) {
+/// Physics beyond the default case's drag and gravity, each with per-particle state that a
+/// checkpoint must carry.
+enum class ExtraPhysics {
+    none,
+    unsteadyForces,    ///< history memory, spin and the rest of the Maxey–Riley state
+    dispersionAndHeat, ///< eddy states with their random-event counters, temperatures
+};
+
+/// Inserts entry after the first occurrence of anchor in text.
+void insertAfter(std::string& text, const std::string& anchor, const std::string& entry) {
+    const auto at = text.find(anchor);
+    ASSERT_NE(at, std::string::npos) << anchor;
+    text.insert(at + anchor.size(), entry);
+}
+
+/// The default case copied into scratch (so tests may edit it), with the extra physics on.
+void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = ExtraPhysics::none) {
     std::string text = slurp(defaultCase / "constant" / "slidesProperties");
-    if (unsteadyForces) {
-        const std::string buoyancy = "buoyancy    on;";
-        const auto at = text.find(buoyancy);
-        ASSERT_NE(at, std::string::npos);
-        text.replace(at, buoyancy.size(),
-                     buoyancy + " history { model basset; } addedMass on; pressureGradient on;"
-                                " lift saffmanMeiMagnus; spin on;");
+    if (physics == ExtraPhysics::unsteadyForces)
+        insertAfter(text, "buoyancy    on;",
+                    " history { model basset; } addedMass on; pressureGradient on;"
+                    " lift saffmanMeiMagnus; spin on;");
+    if (physics == ExtraPhysics::dispersionAndHeat) {
+        insertAfter(text, "buoyancy    on;",
+                    " dispersion { model eddyInteraction; } heatTransfer { model ranzMarshall; }");
+        insertAfter(text, "        effectiveViscosity 1.4e-3;\n    }\n",
+                    "    turbulence { scaling jetLocal; intensity 0.25; lengthScaleToHalfWidth "
+                    "0.2; }\n");
+        insertAfter(text, "    density     5680;\n",
+                    "    specificHeat 460;\n    injectionTemperature 600;\n");
     }
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
@@ -80,15 +99,16 @@ bool killMidRun(const std::vector<std::string>& arguments, const fs::path& check
 
 struct KillMoment {
     int delayMilliseconds; ///< after the first checkpoint appears
-    bool unsteadyForces;
+    ExtraPhysics physics;
 };
 
 class KilledRun : public testing::TestWithParam<KillMoment> {};
 
 TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
-    const auto [delay, unsteadyForces] = GetParam();
-    ScratchDirectory scratch("restart-" + std::to_string(delay) + (unsteadyForces ? "u" : ""));
-    copyDefaultCase(scratch, unsteadyForces);
+    const auto [delay, physics] = GetParam();
+    ScratchDirectory scratch("restart-" + std::to_string(delay) + "-" +
+                             std::to_string(static_cast<int>(physics)));
+    copyDefaultCase(scratch, physics);
     const fs::path reference = scratch.path / "reference";
     const fs::path resumed = scratch.path / "resumed";
     ASSERT_EQ(runCli(scratch.path.string() + " --quiet --threads 2 --output " + reference.string(),
@@ -136,15 +156,20 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
               expected.readDoubles("/arrivals/velocity", 3));
 }
 
-// Kill moments after the first checkpoint: soon, and well into the run; and with the history
-// force's memory, spin and the rest of the Maxey–Riley state to carry across.
+std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
+    const char* physics[] = {"", "WithUnsteadyForces", "WithDispersionAndHeat"};
+    return std::to_string(info.param.delayMilliseconds) + "ms" +
+           physics[static_cast<int>(info.param.physics)];
+}
+
+// Kill moments after the first checkpoint: soon, and well into the run; and with the model
+// states of the unsteady forces, and of dispersion and heating, to carry across.
 INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
-                         testing::Values(KillMoment{0, false}, KillMoment{150, false},
-                                         KillMoment{100, true}),
-                         [](const auto& info) {
-                             return std::to_string(info.param.delayMilliseconds) + "ms" +
-                                    (info.param.unsteadyForces ? "WithUnsteadyForces" : "");
-                         });
+                         testing::Values(KillMoment{0, ExtraPhysics::none},
+                                         KillMoment{150, ExtraPhysics::none},
+                                         KillMoment{100, ExtraPhysics::unsteadyForces},
+                                         KillMoment{100, ExtraPhysics::dispersionAndHeat}),
+                         killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.
 class Checkpointed : public testing::Test {

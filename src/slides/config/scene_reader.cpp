@@ -289,7 +289,8 @@ void readDispersionAndHeat(const KeyReader& keys, Scene& scene) {
     physics.dispersionConstants.Cmu = keys.scalar("physics.dispersion.Cmu");
     physics.dispersionConstants.turbulentSchmidtNumber =
         keys.scalar("physics.dispersion.turbulentSchmidtNumber");
-    if (physics.dispersion != DispersionModel::none)
+    // An OpenFOAM carrier brings its own k and ε fields; an analytic jet needs them described.
+    if (physics.dispersion != DispersionModel::none && scene.carrier.type != CarrierType::foamField)
         keys.require("carrier.turbulence", "by physics.dispersion (k and ε of an analytic jet)");
     physics.heatTransfer =
         *valueNamed(heatTransferModelNames(), keys.word("physics.heatTransfer.model"));
