@@ -131,7 +131,8 @@ TEST(DefaultPhysics, KeepsNoModelState) {
     // cloud carries no per-particle model state.
     const Scene scene = singleParticleScene();
     EXPECT_FALSE(MaxeyRileyStepper::needed(scene.physics));
-    Stepper stepper(scene, test::UniformFlow(Vec3(1, 0, 0)));
+    const test::UniformFlow flow(Vec3(1, 0, 0));
+    Stepper stepper(scene, flow);
     stepper.step();
     EXPECT_EQ(stepper.cloud().stateWidth, 0u);
     EXPECT_TRUE(stepper.cloud().modelState.empty());

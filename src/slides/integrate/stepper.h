@@ -49,7 +49,10 @@ struct StepperCounters {
 
 class Stepper {
 public:
+    /// Keeps references to scene and carrier: both must outlive the stepper.
     Stepper(const Scene& scene, const CarrierField& carrier);
+    Stepper(Scene&&, const CarrierField&) = delete;
+    Stepper(const Scene&, CarrierField&&) = delete;
 
     /// Advances the cloud by one time step.
     void step();
