@@ -130,7 +130,7 @@ TEST(DefaultPhysics, KeepsNoModelState) {
     // Every unsteady term is off by default: the stepper keeps its exponential schemes and the
     // cloud carries no per-particle model state.
     const Scene scene = singleParticleScene();
-    EXPECT_FALSE(MaxeyRileyStepper::needed(scene.physics));
+    EXPECT_FALSE(scene.physics.unsteadyForces());
     const test::UniformFlow flow(Vec3(1, 0, 0));
     Stepper stepper(scene, flow);
     stepper.step();

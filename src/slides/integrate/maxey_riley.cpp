@@ -8,8 +8,6 @@
 
 namespace slides {
 
-bool MaxeyRileyStepper::needed(const PhysicsSettings& physics) { return physics.unsteadyForces(); }
-
 MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     : scene_(scene), drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,
                            scene.particles.density},

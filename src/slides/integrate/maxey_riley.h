@@ -36,9 +36,7 @@ namespace slides {
 
 class MaxeyRileyStepper {
 public:
-    /// Whether any term beyond drag and gravity is on (otherwise the stepper's schemes run).
-    static bool needed(const PhysicsSettings& physics);
-
+    /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run.
     explicit MaxeyRileyStepper(const Scene& scene);
 
     /// Doubles of model state per particle.

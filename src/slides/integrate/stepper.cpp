@@ -20,7 +20,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                .temperature =
                                    scene.physics.heatTransfer != HeatTransferModel::none},
       dispersion_(scene), heating_(scene) {
-    if (MaxeyRileyStepper::needed(scene.physics)) {
+    if (scene.physics.unsteadyForces()) {
         maxeyRiley_.emplace(scene);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
