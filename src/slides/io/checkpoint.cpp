@@ -53,8 +53,7 @@ void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
 }
 void writeColumn(const Hdf5File& file, hid_t parent, const std::string& name,
                  const std::vector<Vec3>& values) {
-    file.writeDataset(parent, name,
-                      {reinterpret_cast<const double*>(values.data()), 3 * values.size()}, 3, "SI");
+    file.writeDataset(parent, name, std::span<const Vec3>(values), "SI");
 }
 
 /// An eddy state as six numbers: the standardised fluctuation, time and length left, and the

@@ -117,6 +117,12 @@ void Hdf5File::writeDataset(hid_t parent, const std::string& name,
     writeRaw(parent, name, H5T_NATIVE_UINT64, values.data(), values.size(), 1, units);
 }
 
+void Hdf5File::writeDataset(hid_t parent, const std::string& name, std::span<const Vec3> values,
+                            std::string_view units) const {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 rows are written as three doubles");
+    writeRaw(parent, name, H5T_NATIVE_DOUBLE, values.data(), values.size(), 3, units);
+}
+
 void Hdf5File::writeAttribute(hid_t object, const std::string& name, std::string_view text) const {
     Hdf5Handle type(H5Tcopy(H5T_C_S1));
     Hdf5Handle space(H5Screate(H5S_SCALAR));

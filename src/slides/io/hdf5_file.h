@@ -8,6 +8,8 @@
 // data is refused on reading); each carries its SI unit in a `units` attribute.
 #pragma once
 
+#include "slides/core/vector.h"
+
 #include <hdf5.h>
 
 #include <cstdint>
@@ -60,6 +62,9 @@ public:
     void writeDataset(hid_t parent, const std::string& name, std::span<const std::int32_t> values,
                       std::string_view units) const;
     void writeDataset(hid_t parent, const std::string& name, std::span<const std::uint64_t> values,
+                      std::string_view units) const;
+    /// Vectors as rows × 3 doubles.
+    void writeDataset(hid_t parent, const std::string& name, std::span<const Vec3> values,
                       std::string_view units) const;
 
     void writeAttribute(hid_t object, const std::string& name, std::string_view text) const;

@@ -10,12 +10,6 @@ namespace slides {
 
 namespace {
 
-static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 rows are written as three doubles");
-
-std::span<const double> flattened(std::span<const Vec3> vectors) {
-    return {reinterpret_cast<const double*>(vectors.data()), 3 * vectors.size()};
-}
-
 std::filesystem::path partialPath(const std::filesystem::path& directory) {
     return directory / (std::string(ParticlesHdf5::fileName) + ".partial");
 }
@@ -58,11 +52,10 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     const Hdf5Handle created = file.createGroup(group);
     const hid_t g = created.get();
     file.writeAttribute(g, "time", time);
-    file.writeDataset(g, "position", flattened(frame.position), 3, "m");
+    file.writeDataset(g, "position", frame.position, "m");
     const auto has = [&](ParticleField field) { return frame.fields.contains(field); };
     if (has(ParticleField::id)) file.writeDataset(g, "id", frame.id, "1");
-    if (has(ParticleField::velocity))
-        file.writeDataset(g, "velocity", flattened(frame.velocity), 3, "m/s");
+    if (has(ParticleField::velocity)) file.writeDataset(g, "velocity", frame.velocity, "m/s");
     if (has(ParticleField::diameter)) {
         scratch_.resize(count);
         for (std::size_t i = 0; i < count; ++i) scratch_[i] = 2 * frame.radius[i];
@@ -101,8 +94,8 @@ void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {
     file.writeDataset(group.get(), "id", ids, "1");
     file.writeDataset(group.get(), "surface", surfaces, "1");
     file.writeDataset(group.get(), "time", times, 1, "s");
-    file.writeDataset(group.get(), "position", flattened(positions), 3, "m");
-    file.writeDataset(group.get(), "velocity", flattened(velocities), 3, "m/s");
+    file.writeDataset(group.get(), "position", positions, "m");
+    file.writeDataset(group.get(), "velocity", velocities, "m/s");
     file.writeDataset(group.get(), "diameter", diameters, 1, "m");
     file.writeAttribute(file.root(), "frames", static_cast<std::int64_t>(frames_.size()));
     file_->close();
