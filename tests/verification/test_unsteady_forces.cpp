@@ -115,13 +115,14 @@ TEST(Spin, SpinsUpInAVortexAndDownAfterItAsEquation318) {
     Stepper stepper(scene, vortex);
     const auto& cloud = stepper.cloud();
     while (!stepper.finished()) stepper.step();
-    ASSERT_EQ(cloud.stateWidth, 7u); // age, v_{n−1}, ω
+    ASSERT_EQ(cloud.stateWidth, 4u); // age, v_{n−1}; ω is ParticleCloud::angularVelocity
+    ASSERT_EQ(cloud.angularVelocity.size(), 1u);
     // Steps 0…99 see the vortex at both samples, step 100 at its start only (the step freezes
     // the mean rotation rate/2), steps 101…199 none.
     const double spun = rate * (1 - std::exp(-100 * h / tau));
     const double straddled = rate / 2 + (spun - rate / 2) * std::exp(-h / tau);
     const double expected = straddled * std::exp(-99 * h / tau);
-    const double spin = cloud.modelState[4 + 2];
+    const double spin = cloud.angularVelocity[0].z();
     std::printf("ω_z after spin-down %.6e, Eq. 3.18 %.6e\n", spin, expected);
     EXPECT_NEAR(spin / expected, 1.0, 1e-12);
 }
@@ -136,6 +137,7 @@ TEST(DefaultPhysics, KeepsNoModelState) {
     stepper.step();
     EXPECT_EQ(stepper.cloud().stateWidth, 0u);
     EXPECT_TRUE(stepper.cloud().modelState.empty());
+    EXPECT_TRUE(stepper.cloud().angularVelocity.empty());
 }
 
 TEST(SaffmanMeiLift, MatchesSaffmansLowReynoldsLimit) {

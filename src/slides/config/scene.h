@@ -8,9 +8,12 @@
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/jet_frame.h"
 #include "slides/carrier/jet_scalars.h"
+#include "slides/collide/collision_settings.h"
 #include "slides/core/vector.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
+#include "slides/physics/adhesion.h"
+#include "slides/physics/contact_pair.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/heat_transfer.h"
@@ -63,15 +66,6 @@ struct RadiusDistribution {
     double meanRadius() const;             ///< expected value of the (untruncated) distribution [m]
 };
 
-/// Elastic and adhesive properties (Table 5.2); read and checked now, used by the collision
-/// and deposition models.
-struct MaterialSettings {
-    double bulkModulus = 0;   ///< [Pa]
-    double shearModulus = 0;  ///< [Pa]
-    double yieldStress = 0;   ///< [Pa]
-    double surfaceEnergy = 0; ///< [J/m²]
-};
-
 struct ParticleSettings {
     long count = 0;
     double density = 0; ///< ρp [kg/m³]
@@ -119,12 +113,13 @@ struct TimeSettings {
     Integrator integrator = Integrator::exponentialMidpoint;
 };
 
-/// A plane that records the particles reaching it (deposition physics comes later).
+/// A plane surface: a sink, a wall or a deposition target (collide/collision_settings.h).
 struct PlaneSurface {
     std::string name;
     Vec3 point = Vec3::Zero();
     Vec3 normal = Vec3::UnitX(); ///< unit, pointing into the gas side
     MaterialSettings material;
+    SurfaceInteraction interaction = SurfaceInteraction::absorb;
 };
 
 struct OutputSettings {
@@ -144,6 +139,8 @@ struct Scene {
     InjectionSettings injection;
     PhysicsSettings physics;
     TimeSettings time;
+    CollisionSettings collisions;
+    AdhesionSettings deposition; ///< adhesion of surfaces whose interaction is deposit
     std::vector<PlaneSurface> surfaces;
     Box domain;                     ///< particles leaving this box have escaped
     bool domainFromCarrier = false; ///< no domain given: the carrier's bounds (a mesh) set it

@@ -1,8 +1,10 @@
 #include "slides/config/scene_keys.h"
 
 #include "slides/carrier/foam_interpolation.h"
+#include "slides/collide/collision_settings.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
+#include "slides/physics/adhesion.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/heat_transfer.h"
@@ -194,15 +196,53 @@ std::vector<KeyDeclaration> declareKeys() {
         {"time.integrator", K::word, "-", "exponentialMidpoint", namesOf(integratorNames()),
          R::any, "Time integrator (integrate/integrator.h)."},
 
+        {"collisions", K::dictionary, "-", "-", {}, R::any,
+         "Contacts between particles, and the laws of every impulse contact (collide/)."},
+        {"collisions.model", K::word, "-", "none", namesOf(collisionModelNames()), R::any,
+         "Particle–particle collisions: none, or impulse (collide-and-stream, Eq. 2.34–2.58)."},
+        {"collisions.restitution", K::dictionary, "-", "-", {}, R::any,
+         "Restitution of impulse contacts (physics/restitution.h)."},
+        {"collisions.restitution.model", K::word, "-", "velocityDependent",
+         namesOf(restitutionModelNames()), R::any,
+         "constant: e = coefficient; velocityDependent: elastic below v_Y (Eq. 2.63), Eq. 2.62 "
+         "above, from the materials' moduli and yield stress."},
+        {"collisions.restitution.coefficient", K::scalar, "-", "0.9", {}, R::nonNegative,
+         "e of the constant model."},
+        {"collisions.restitution.yieldPressureFactor", K::scalar, "-", "3", {}, R::positive,
+         "α of the mean contact pressure αY (Eq. 2.60–2.64): 3 for metals, about 1 for foams."},
+        {"collisions.friction", K::dictionary, "-", "-", {}, R::any,
+         "Coulomb stick–slip friction of impulse contacts (Eq. 2.30–2.31)."},
+        {"collisions.friction.static", K::scalar, "-", "0.3", {}, R::nonNegative,
+         "μ_s: the contact sticks while the stick impulse is below μ_s times the normal one."},
+        {"collisions.friction.dynamic", K::scalar, "-", "0.3", {}, R::nonNegative,
+         "μ_d: tangential impulse of a slipping contact per normal impulse."},
+
+        {"deposition", K::dictionary, "-", "-", {}, R::any,
+         "Adhesion on surfaces whose interaction is deposit, and on their deposit (Eq. 5.7–5.9)."},
+        {"deposition.adhesion", K::word, "-", "interfaceEnergy", namesOf(adhesionModelNames()),
+         R::any,
+         "interfaceEnergy: F = 2πR*·2√(γ1γ2) (Eq. 2.72–2.74, 5.7); hamaker: F = A R*/(6ε0²) "
+         "(Eq. 2.75)."},
+        {"deposition.adhesionFactor", K::scalar, "-", "1", {}, R::positive,
+         "α multiplying the adhesion force (Table 5.2 assumes 5000)."},
+        {"deposition.hamakerConstant", K::scalar, "J", "-", {}, R::positive,
+         "Hamaker constant A (adhesion hamaker)."},
+        {"deposition.contactSeparation", K::scalar, "m", "4e-10", {}, R::positive,
+         "Separation ε0 of surfaces in contact (adhesion hamaker)."},
+
         {"surfaces", K::dictionary, "-", "", {}, R::any,
-         "Named surfaces; particles reaching one are recorded there."},
+         "Named surfaces that particles meet."},
         {"surfaces.*", K::dictionary, "-", "-", {}, R::any, "One surface, named by its key."},
         {"surfaces.*.type", K::word, "-", "plane", {"plane"}, R::any, "Surface shape."},
         {"surfaces.*.point", K::vector, "m", "", {}, R::any, "A point on the plane."},
         {"surfaces.*.normal", K::vector, "-", "", {}, R::any,
          "Plane normal pointing into the gas (normalised on reading)."},
+        {"surfaces.*.interaction", K::word, "-", "absorb", namesOf(surfaceInteractionNames()),
+         R::any,
+         "absorb: record the arrival and remove the particle; rebound: impulse law (Eq. "
+         "2.15–2.33); deposit: stick where Eq. 5.9 holds, else rebound."},
         {"surfaces.*.material", K::dictionary, "-", "-", {}, R::any,
-         "Surface properties (Table 5.2), for deposition models."},
+         "Surface properties (Table 5.2), for rebound and deposition."},
         {"surfaces.*.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,
          "Bulk modulus."},
         {"surfaces.*.material.shearModulus", K::scalar, "Pa", "-", {}, R::positive,

@@ -304,6 +304,69 @@ void readDispersionAndHeat(const KeyReader& keys, Scene& scene) {
     }
 }
 
+/// collisions and deposition, and what their laws need of the particles' and surfaces'
+/// materials (after the surfaces are read).
+void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
+    CollisionSettings& collisions = scene.collisions;
+    collisions.model = *valueNamed(collisionModelNames(), keys.word("collisions.model"));
+    RestitutionSettings& restitution = collisions.restitution;
+    restitution.model =
+        *valueNamed(restitutionModelNames(), keys.word("collisions.restitution.model"));
+    restitution.coefficient = keys.scalar("collisions.restitution.coefficient");
+    if (restitution.coefficient > 1)
+        keys.fail("collisions.restitution.coefficient", "must not exceed 1");
+    restitution.yieldPressureFactor = keys.scalar("collisions.restitution.yieldPressureFactor");
+    collisions.friction.staticCoefficient = keys.scalar("collisions.friction.static");
+    collisions.friction.dynamicCoefficient = keys.scalar("collisions.friction.dynamic");
+
+    AdhesionSettings& adhesion = scene.deposition;
+    adhesion.model = *valueNamed(adhesionModelNames(), keys.word("deposition.adhesion"));
+    adhesion.factor = keys.scalar("deposition.adhesionFactor");
+    adhesion.contactSeparation = keys.scalar("deposition.contactSeparation");
+    if (adhesion.model == AdhesionModel::hamaker) {
+        keys.require("deposition.hamakerConstant", "by deposition.adhesion hamaker");
+        adhesion.hamakerConstant = keys.scalar("deposition.hamakerConstant");
+    }
+
+    // The materials each law reads (physics/contact_pair.h, restitution.h, adhesion.h).
+    const bool velocityDependent = restitution.model == RestitutionModel::velocityDependent;
+    const auto requireMaterial = [&](const std::string& base, bool needsYield,
+                                     const std::string& because) {
+        if (velocityDependent) {
+            keys.require(base + ".bulkModulus", because + " (restitution velocityDependent)");
+            keys.require(base + ".shearModulus", because + " (restitution velocityDependent)");
+        }
+        if (needsYield) keys.require(base + ".yieldStress", because);
+    };
+    bool anyContact = collisions.model != CollisionModel::none;
+    bool anyDeposit = false;
+    for (const PlaneSurface& surface : scene.surfaces) {
+        const std::string base = "surfaces." + surface.name;
+        if (surface.interaction == SurfaceInteraction::absorb) continue;
+        anyContact = true;
+        requireMaterial(base + ".material", false, "by interaction of surface " + surface.name);
+        if (surface.interaction != SurfaceInteraction::deposit) continue;
+        anyDeposit = true;
+        if (adhesion.model == AdhesionModel::interfaceEnergy)
+            keys.require(base + ".material.surfaceEnergy",
+                         "by deposition.adhesion interfaceEnergy");
+    }
+    if (anyContact)
+        requireMaterial("particles.material", velocityDependent,
+                        "by collisions or a surface's interaction");
+    if (anyDeposit) {
+        // Eq. 5.9's compression time δt₁ (Eq. 2.64) needs the moduli and yield stress.
+        requireMaterial("particles.material", true, "by a deposit surface (Eq. 5.9)");
+        if (!velocityDependent) {
+            keys.require("particles.material.bulkModulus", "by a deposit surface (Eq. 5.9)");
+            keys.require("particles.material.shearModulus", "by a deposit surface (Eq. 5.9)");
+        }
+        if (adhesion.model == AdhesionModel::interfaceEnergy)
+            keys.require("particles.material.surfaceEnergy",
+                         "by deposition.adhesion interfaceEnergy");
+    }
+}
+
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     CarrierSettings carrier;
     const std::string type = keys.word("carrier.type");
@@ -440,8 +503,11 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         plane.point = keys.vector(base + ".point");
         plane.normal = keys.direction(base + ".normal");
         plane.material = readMaterial(keys, base + ".material");
+        plane.interaction =
+            *valueNamed(surfaceInteractionNames(), keys.word(base + ".interaction"));
         scene.surfaces.push_back(plane);
     }
+    readCollisionsAndDeposition(keys, scene);
 
     scene.domainFromCarrier = !keys.has("domain");
     if (scene.carrier.type != CarrierType::foamField)

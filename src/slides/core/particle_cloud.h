@@ -26,14 +26,15 @@ struct ParticleCloud {
     std::vector<double> radius; ///< [m]
     /// A mesh carrier's cell of each particle (CarrierField::sampleFrom); empty otherwise.
     std::vector<std::int32_t> carrierLocation;
-    /// Per-particle model state (history memory, spin): stateWidth doubles a particle, moved
+    /// Per-particle model state (history memory): stateWidth doubles a particle, moved
     /// with it; empty when no model keeps state.
     std::vector<double> modelState;
     std::size_t stateWidth = 0;
     // Model state: empty while its model is off, else one entry per particle (the stepper
     // fills the entries of particles as they enter).
-    std::vector<EddyState> eddy;     ///< turbulent dispersion (physics/dispersion.h)
-    std::vector<double> temperature; ///< θ [K], heat transfer (physics/heat_transfer.h)
+    std::vector<EddyState> eddy;       ///< turbulent dispersion (physics/dispersion.h)
+    std::vector<double> temperature;   ///< θ [K], heat transfer (physics/heat_transfer.h)
+    std::vector<Vec3> angularVelocity; ///< ω [rad/s], spin (physics/spin.h) or collisions
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -56,6 +57,7 @@ struct ParticleCloud {
         visit("carrierLocation", cloud.carrierLocation);
         visit("eddy", cloud.eddy);
         visit("temperature", cloud.temperature);
+        visit("angularVelocity", cloud.angularVelocity);
     }
 };
 

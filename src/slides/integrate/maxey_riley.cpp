@@ -20,10 +20,6 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     width_ = 4; // age, v_{n−1}
-    if (physics.spin) {
-        spinOffset_ = width_;
-        width_ += 3;
-    }
     if (physics.history == HistoryModel::basset) {
         history_ =
             WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
@@ -119,7 +115,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
             const Vec3 vorticity0 = vorticity(grad0), vorticity1 = vorticity(grad1);
             Vec3 spinStart = Vec3::Zero(), spinEnd = Vec3::Zero();
             if (scene_.physics.spin) {
-                Eigen::Map<Vec3> spin(state + spinOffset_);
+                Vec3& spin = cloud.angularVelocity[static_cast<std::size_t>(i)];
                 spinStart = spin;
                 spin = relaxSpin(spin, 0.5 * (vorticity0 + vorticity1),
                                  spinResponseTime(particleDensity, fluidDensity, viscosity, radius),

@@ -15,7 +15,7 @@
 // L-stable: for h ≫ τ the slip decays in alternating steps). The history weights assume the
 // step dt; a particle injected inside a step (shorter first step) or the run's shortened last
 // step makes an O(h²) error there. Per-particle state lives in ParticleCloud::modelState: age,
-// w_{n−1}, then spin, then the history start s0, I_n and the window + tail memory, each only
+// w_{n−1}, then the history start s0, I_n and the window + tail memory, each only
 // when its term is on.
 //
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;
@@ -54,7 +54,7 @@ private:
     double fluidAccelerationFactor_;
     CarrierNeeds needs_;
     std::optional<WindowTailLayout> history_;
-    std::size_t spinOffset_ = 0, historyOffset_ = 0, width_ = 0;
+    std::size_t historyOffset_ = 0, width_ = 0;
 
     CarrierSample gasStart_, gasEnd_;
     std::vector<Vec3> predicted_;           ///< x* of each particle

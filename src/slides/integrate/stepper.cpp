@@ -19,11 +19,16 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
       injector_(scene), needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
                                .temperature =
                                    scene.physics.heatTransfer != HeatTransferModel::none},
-      dispersion_(scene), heating_(scene) {
+      dispersion_(scene), heating_(scene), surfaces_(scene) {
     if (scene.physics.unsteadyForces()) {
         maxeyRiley_.emplace(scene);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
+    if (scene.collisions.model != CollisionModel::none) collisions_.emplace(scene);
+    tracksSpin_ = scene.physics.spin || collisions_ ||
+                  std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const auto& s) {
+                      return s.interaction != SurfaceInteraction::absorb;
+                  });
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
 
@@ -48,6 +53,11 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
         throw std::logic_error("checkpoint's model state does not fit the scene's models");
     cloud_ = std::move(cloud);
     arrivals_ = std::move(arrivals);
+    // The deposit is the particles that stuck: the arrivals at deposition surfaces.
+    for (const Arrival& arrival : arrivals_)
+        if (scene_.surfaces[static_cast<std::size_t>(arrival.surface)].interaction ==
+            SurfaceInteraction::deposit)
+            surfaces_.addToDeposit(arrival);
 }
 
 void Stepper::step() {
@@ -59,11 +69,13 @@ void Stepper::step() {
     for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
         stepLengths_[i] = std::clamp(time_ + h - injector_.injectionTime(cloud_.id[i]), 0.0, h);
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
+    if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     particleSteps_ += cloud_.size();
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
     advance(h);
     heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
+    if (collisions_) collisions_->collide(cloud_, startPositions_, stepLengths_);
     meetSurfaces(h);
     time_ += h;
     ++steps_;
@@ -137,6 +149,7 @@ void Stepper::sampleCarrier(const std::vector<Vec3>& points, std::vector<std::in
 }
 
 void Stepper::meetSurfaces(double h) {
+    surfaces_.indexDeposit();
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
         const Vec3& x = cloud_.position[i];
@@ -148,24 +161,13 @@ void Stepper::meetSurfaces(double h) {
                     << x.transpose() << ", velocity " << v.transpose() << ")";
             throw std::runtime_error(message.str());
         }
-        int touched = -1;
-        double firstTouch = 2.0;
-        for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
-            const auto fraction =
-                planeContactFraction(scene_.surfaces[s], startPositions_[i], x, cloud_.radius[i]);
-            if (fraction && *fraction < firstTouch) {
-                firstTouch = *fraction;
-                touched = static_cast<int>(s);
-            }
-        }
-        if (touched >= 0) {
-            const Vec3& x0 = startPositions_[i];
-            const Vec3& v0 = startVelocities_[i];
-            const double arrivalTime = time_ + h - (1 - firstTouch) * stepLengths_[i];
-            arrivals_.push_back({cloud_.id[i], touched, arrivalTime, x0 + firstTouch * (x - x0),
-                                 v0 + firstTouch * (v - v0), cloud_.radius[i],
-                                 cloud_.temperature.empty() ? 0.0 : cloud_.temperature[i]});
-        } else if (insideBox(scene_.domain, x) &&
+        Arrival arrival;
+        const ImpactResult impact =
+            surfaces_.meet(cloud_, i, startPositions_[i], startVelocities_[i], stepLengths_[i],
+                           time_ + h, arrival);
+        if (impact == ImpactResult::arrived) {
+            arrivals_.push_back(arrival);
+        } else if (insideBox(scene_.domain, cloud_.position[i]) &&
                    (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1)) {
             continue; // a location below −1 left the mesh at the step's start
         } else {

@@ -15,14 +15,18 @@
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator;
 //   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
 //      (integrate/particle_heating.h);
-//   4. a particle whose path touched a surface is frozen there as an Arrival, one that left the
-//      domain box, or the carrier's mesh, has escaped; both leave the cloud.
+//   3c. with particle collisions on, contacts between particles during the step are resolved
+//      by impulses (collide/particle_collisions.h);
+//   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
+//      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
+//      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
 // so results are identical for any thread count. A non-finite position or velocity stops the
 // run with an error naming the particle, instead of propagating.
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/collide/particle_collisions.h"
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injector.h"
@@ -31,6 +35,7 @@
 #include "slides/integrate/turbulent_dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
+#include "slides/surfaces/surface_impacts.h"
 
 #include <cstdint>
 #include <optional>
@@ -66,6 +71,9 @@ public:
     long escaped() const { return escaped_; }
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
+    const SurfaceImpacts& surfaceImpacts() const { return surfaces_; }
+    /// Particle–particle contacts resolved so far (0 without collisions).
+    long collisions() const { return collisions_ ? collisions_->collisions() : 0; }
 
     StepperCounters counters() const;
     /// Continues from a checkpoint's state: every later step is bit for bit the one the
@@ -94,7 +102,10 @@ private:
     long steps_ = 0;
     long escaped_ = 0;
     std::uint64_t particleSteps_ = 0;
-    std::optional<MaxeyRileyStepper> maxeyRiley_; ///< when an unsteady term is on
+    std::optional<MaxeyRileyStepper> maxeyRiley_;  ///< when an unsteady term is on
+    std::optional<ParticleCollisions> collisions_; ///< when collisions.model is not none
+    SurfaceImpacts surfaces_;
+    bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
 
     // Scratch, reused every step.
     CarrierSample gas_;

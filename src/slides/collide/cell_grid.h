@@ -1,0 +1,74 @@
+// CellGrid: the broad phase — points binned into cubic cells by a counting sort over a hash of
+// their cell coordinates, so that only points in the same or nearby cells are compared.
+//
+// Reference: Algorithm 4 and Eq. 4.36 of the reference (binning, O(N_p) contact search);
+// the hashed layout (Teschner et al. 2003, "Optimized spatial hashing for collision detection
+// of deformable objects") keeps memory at O(N) however long and thin the spray is, instead of
+// a dense 3-D array over its bounding box. Buckets are twice the number of points; a bucket
+// shared by two cells only costs a comparison of cell coordinates.
+#pragma once
+
+#include "slides/core/vector.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace slides {
+
+class CellGrid {
+public:
+    using Cell = std::array<std::int64_t, 3>;
+
+    /// Bins the points into cubes of edge cellSize [m] (O(N), counting sort).
+    void build(const std::vector<Vec3>& points, double cellSize);
+
+    std::size_t size() const { return cells_.size(); }
+    double cellSize() const { return cellSize_; }
+
+    /// Calls visit(j) for every point j > i in the cell of point i or the 26 around it: each
+    /// pair of points closer than one cell edge is visited exactly once over all i.
+    template <typename Visit> void forEachNeighbourAfter(std::uint32_t i, Visit visit) const {
+        forEachPointNear(cells_[i], 1, [&](std::uint32_t j) {
+            if (j > i) visit(j);
+        });
+    }
+
+    /// Calls visit(j) for every point j within the cells that a ball of radius reach around
+    /// centre can touch (a superset of the points closer than reach).
+    template <typename Visit>
+    void forEachPointWithin(const Vec3& centre, double reach, Visit visit) const {
+        if (cells_.empty()) return;
+        const auto range = static_cast<std::int64_t>(std::ceil(reach / cellSize_));
+        forEachPointNear(cellOf(centre), range, visit);
+    }
+
+private:
+    Cell cellOf(const Vec3& point) const;
+    std::size_t bucketOf(const Cell& cell) const;
+
+    template <typename Visit>
+    void forEachPointNear(const Cell& centre, std::int64_t range, Visit visit) const {
+        for (std::int64_t dx = -range; dx <= range; ++dx)
+            for (std::int64_t dy = -range; dy <= range; ++dy)
+                for (std::int64_t dz = -range; dz <= range; ++dz) {
+                    const Cell cell{centre[0] + dx, centre[1] + dy, centre[2] + dz};
+                    const std::size_t bucket = bucketOf(cell);
+                    for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1];
+                         ++k) {
+                        const std::uint32_t j = sorted_[k];
+                        if (cells_[j] == cell) visit(j);
+                    }
+                }
+    }
+
+    double cellSize_ = 1;
+    std::vector<Cell> cells_;                ///< each point's cell
+    std::vector<std::uint32_t> bucketStart_; ///< bucket b holds sorted_[start[b], start[b+1])
+    std::vector<std::uint32_t> sorted_;      ///< point indices ordered by bucket
+    std::vector<std::size_t> bucketOfPoint_; ///< scratch of build
+    std::vector<std::uint32_t> nextSlot_;    ///< scratch of build
+};
+
+} // namespace slides

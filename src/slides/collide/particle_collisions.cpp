@@ -1,0 +1,102 @@
+#include "slides/collide/particle_collisions.h"
+
+#include "slides/collide/impulse.h"
+#include "slides/collide/swept_contact.h"
+#include "slides/physics/contact_pair.h"
+#include "slides/physics/restitution.h"
+
+#include <algorithm>
+#include <cmath>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace slides {
+
+ParticleCollisions::ParticleCollisions(const Scene& scene)
+    : scene_(scene), particleDensity_(scene.particles.density) {}
+
+void ParticleCollisions::findContacts(const ParticleCloud& cloud,
+                                      const std::vector<Vec3>& startPositions) {
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    double largestRadius = 0, longestChord = 0;
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        largestRadius = std::max(largestRadius, cloud.radius[i]);
+        longestChord = std::max(longestChord, (cloud.position[i] - startPositions[i]).norm());
+    }
+    grid_.build(cloud.position, 2 * largestRadius + 2 * longestChord);
+
+    // Each thread keeps the contacts of its own contiguous block of particles; joined in
+    // thread order they are ordered by the first particle, whatever the thread count.
+    std::vector<std::vector<ParticleContact>> perThread;
+#pragma omp parallel
+    {
+#ifdef _OPENMP
+#pragma omp single
+        perThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        auto& found = perThread[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+        perThread.resize(1);
+        auto& found = perThread[0];
+#endif
+#pragma omp for schedule(static)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            const auto a = static_cast<std::uint32_t>(i);
+            grid_.forEachNeighbourAfter(a, [&](std::uint32_t b) {
+                const auto fraction = sweptContactFraction(startPositions[a] - startPositions[b],
+                                                           cloud.position[a] - cloud.position[b],
+                                                           cloud.radius[a] + cloud.radius[b]);
+                if (fraction) found.push_back({a, b, *fraction});
+            });
+        }
+    }
+    contacts_.clear();
+    for (const auto& found : perThread)
+        contacts_.insert(contacts_.end(), found.begin(), found.end());
+    // Earliest touch first; ties by particle id, which, unlike an index, a run never reorders.
+    const auto key = [&](const ParticleContact& c) {
+        const ParticleId first = cloud.id[c.a], second = cloud.id[c.b];
+        return std::make_tuple(c.fraction, std::min(first, second), std::max(first, second));
+    };
+    std::sort(contacts_.begin(), contacts_.end(),
+              [&](const ParticleContact& x, const ParticleContact& y) { return key(x) < key(y); });
+}
+
+void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& startPositions,
+                                 const std::vector<double>& stepLengths) {
+    if (cloud.size() < 2) return;
+    findContacts(cloud, startPositions);
+    const MaterialSettings& material = scene_.particles.material;
+    for (const ParticleContact& contact : contacts_) {
+        const std::uint32_t a = contact.a, b = contact.b;
+        const double s = contact.fraction;
+        const Vec3 centreA = startPositions[a] + s * (cloud.position[a] - startPositions[a]);
+        const Vec3 centreB = startPositions[b] + s * (cloud.position[b] - startPositions[b]);
+        const Vec3 separation = centreA - centreB;
+        if (!(separation.squaredNorm() > 0)) continue; // coincident centres: no normal
+        const Vec3 normal = separation.normalized();
+        const auto massOf = [&](double radius) {
+            return 4.0 / 3.0 * M_PI * radius * radius * radius * particleDensity_;
+        };
+        const double massA = massOf(cloud.radius[a]), massB = massOf(cloud.radius[b]);
+        ImpactBody bodyA{cloud.velocity[a], cloud.angularVelocity[a], 1 / massA, cloud.radius[a]};
+        ImpactBody bodyB{cloud.velocity[b], cloud.angularVelocity[b], 1 / massB, cloud.radius[b]};
+        const double approach = -(bodyA.velocity - bodyB.velocity).dot(normal);
+        if (approach <= 0) continue;
+        const ContactPair pair =
+            contactPair({massA, cloud.radius[a], &material}, {massB, cloud.radius[b], &material});
+        const double e = restitutionCoefficient(scene_.collisions.restitution, pair, approach);
+        const Vec3 impulse = contactImpulse(bodyA, bodyB, normal, e, scene_.collisions.friction);
+        applyImpulse(bodyA, bodyB, normal, impulse);
+        cloud.position[a] += (1 - s) * stepLengths[a] * (bodyA.velocity - cloud.velocity[a]);
+        cloud.position[b] += (1 - s) * stepLengths[b] * (bodyB.velocity - cloud.velocity[b]);
+        cloud.velocity[a] = bodyA.velocity;
+        cloud.velocity[b] = bodyB.velocity;
+        cloud.angularVelocity[a] = bodyA.angularVelocity;
+        cloud.angularVelocity[b] = bodyB.angularVelocity;
+        ++collisions_;
+    }
+}
+
+} // namespace slides

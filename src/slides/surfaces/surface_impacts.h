@@ -1,0 +1,58 @@
+// SurfaceImpacts: what happens where a particle's path meets a surface or the deposit —
+// absorbed, stuck (Eq. 5.9) or rebounded by the impulse law (Eq. 2.15–2.33).
+//
+// The first touch along the step's chord x₀ → x₁ is sought among the planes
+// (surfaces/plane_contact.h) and the deposited particles (surfaces/deposit.h). At the touch,
+// the particle's velocity is that of the chord's fraction s, v_c = v₀ + s (v₁ − v₀):
+//   absorb  — the arrival is recorded there and the particle leaves;
+//   deposit — if v_n = −v_c·n̂ is below Eq. 5.9's limit for the pair (particle–surface, or
+//             particle–deposited particle), it sticks: recorded as an arrival, added to the
+//             deposit, and leaves; otherwise it rebounds;
+//   rebound — impulse J against a rigid body (collide/impulse.h, restitution from
+//             physics/restitution.h): v₁ += J/m, ω += r × J / I, and x₁ += (1 − s) h J/m, the
+//             rest of the step flown with the new velocity.
+// A hit on the deposit inherits the interaction and adhesion of the surface it grew on, with
+// the particles' own material on both sides.
+//
+//     surfaces { target { type plane; point (0.06 0 0); normal (-1 0 0); interaction deposit; } }
+#pragma once
+
+#include "slides/config/scene.h"
+#include "slides/core/particle_cloud.h"
+#include "slides/surfaces/arrival.h"
+#include "slides/surfaces/deposit.h"
+
+#include <vector>
+
+namespace slides {
+
+enum class ImpactResult { none, rebounded, arrived };
+
+class SurfaceImpacts {
+public:
+    explicit SurfaceImpacts(const Scene& scene);
+
+    /// Meets particle i, which flew from start (velocity startVelocity) to its current state
+    /// over stepLength, ending at time stepEnd. On `arrived`, arrival holds the record.
+    ImpactResult meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
+                      const Vec3& startVelocity, double stepLength, double stepEnd,
+                      Arrival& arrival);
+
+    /// Puts a particle that stuck in an earlier run back into the deposit (restart).
+    void addToDeposit(const Arrival& stuck) {
+        deposit_.add(stuck.position, stuck.radius, stuck.surface);
+    }
+    /// Makes the particles stuck so far obstacles for the next meetings.
+    void indexDeposit() { deposit_.index(); }
+
+    const Deposit& deposit() const { return deposit_; }
+    /// Rebounds off each surface (and its deposit) so far.
+    const std::vector<long>& rebounds() const { return rebounds_; }
+
+private:
+    const Scene& scene_;
+    Deposit deposit_;
+    std::vector<long> rebounds_;
+};
+
+} // namespace slides
