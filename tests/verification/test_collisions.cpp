@@ -76,9 +76,10 @@ TEST(PairImpulse, ConservesMomentaAndRestoresTheNormalVelocityByE) {
         const auto [p0, l0] = momenta(a, xa, b, xb);
         const Vec3 impulse = contactImpulse(a, b, normal, e, friction);
         const Vec3 tangential = impulse - impulse.dot(normal) * normal;
-        (tangential.norm() < friction.staticCoefficient * impulse.dot(normal) * (1 - 1e-12)
-             ? sticking
-             : slipping)++;
+        const bool slips =
+            std::abs(tangential.norm() - friction.dynamicCoefficient * impulse.dot(normal)) <
+            1e-12 * impulse.norm();
+        (slips ? slipping : sticking)++;
         applyImpulse(a, b, normal, impulse);
         const auto [p1, l1] = momenta(a, xa, b, xb);
         EXPECT_LT((p1 - p0).norm(), 1e-14 * p0.norm() + 1e-22);

@@ -93,8 +93,8 @@ TEST(DepositGrowth, SecondParticleReboundsOffTheFirstAboveTheParticleParticleLim
     const Outcome fast = run(1.2, 2);
     EXPECT_EQ(fast.stuck, 1u);
     ASSERT_EQ(fast.velocities.size(), 1u);
-    EXPECT_LT(fast.velocities[0].x(), 0); // flying back, head-on
-    EXPECT_NEAR(fast.velocities[0].y(), 0, 1e-12);
+    EXPECT_LT(fast.velocities[0].x(), 0); // flying back, head-on: the point nozzle's 1e-15 m
+    EXPECT_NEAR(fast.velocities[0].y(), 0, 1e-10); // spread tilts the normal by ~1e-11 rad
     // Just below the limit it sticks.
     EXPECT_EQ(run(0.99 * 0.847420, 2).stuck, 2u);
     EXPECT_EQ(run(1.01 * 0.847420, 2).stuck, 1u);
