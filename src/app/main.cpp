@@ -148,6 +148,12 @@ int run(const Options& options) {
         std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
                     stepper.injected(), stepper.arrivals().size(), stepper.escaped(),
                     stepper.cloud().size());
+        if (summary.contains("deposition"))
+            for (const auto& [surface, deposit] : summary["deposition"].items())
+                std::printf("  deposit on %s: %ld stuck, n_dep = %.4g, h_dep = %.4g m (Eq. 5.12)\n",
+                            surface.c_str(), deposit["stuck"].get<long>(),
+                            deposit["depositedFraction"].get<double>(),
+                            deposit["depositHeight"].get<double>());
         std::printf("results in %s/ (%zu frames)\n  open in ParaView:  paraview %s\n"
                     "  summary:           %s\n",
                     output.directory().c_str(), output.frames().size(),

@@ -3,6 +3,7 @@
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
 #include "slides/io/vtk_carrier_grid.h"
+#include "slides/io/vtk_deposit.h"
 #include "slides/io/vtk_particles.h"
 
 #include <charconv>
@@ -40,6 +41,9 @@ std::filesystem::path prepared(std::filesystem::path directory, std::optional<st
             stale = !kept || parsed.ptr != digits.end() || index >= *kept;
         }
         if (!kept) stale = stale || name == partial || name == checkpointFileName;
+        // The deposit is written when a run finishes: any here is an earlier run's.
+        stale = stale || name == "deposit.vtp" ||
+                (name.starts_with("deposit_") && name.ends_with(".vti"));
         if (stale) std::filesystem::remove(entry.path());
     }
     return directory;
@@ -51,7 +55,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
                      const CarrierField& carrier, const std::vector<FrameRecord>* resumed)
     : directory_(
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
-      series_(directory_ / "particles.pvd"), fields_(scene.output.fields),
+      scene_(scene), series_(directory_ / "particles.pvd"), fields_(scene.output.fields),
       heating_(scene.physics.heatTransfer != HeatTransferModel::none) {
     if (resumed) {
         frames_ = *resumed;
@@ -101,6 +105,7 @@ void RunOutput::writeFrame(const Stepper& stepper) {
 
 void RunOutput::finish(const Stepper& stepper, const nlohmann::json& summary) {
     if (hdf5_) hdf5_->finish(stepper.arrivals());
+    writeDeposit(directory_, scene_, stepper.arrivals());
     writeTextAtomically(directory_ / "summary.json", summary.dump(2) + "\n");
 }
 

@@ -3,7 +3,10 @@
 //   particles.pvd          time series for ParaView, one entry per frame
 //   particles_NNNNNN.vtp   moving particles (state 0) and those that arrived (state 1)
 //   carrier.vti            the carrier sampled on a lattice over the domain, for context
-//   summary.json           counts, arrival statistics, speed and settings (io/summary.h)
+//   summary.json           counts, arrival statistics, deposit metrics, speed and settings
+//                          (io/summary.h)
+//   deposit.vtp, deposit_<surface>.vti   the stuck particles and the deposit's height map,
+//                          with deposit surfaces (io/vtk_deposit.h)
 //   particles.h5, .xmf     every frame and the arrivals in HDF5 (io/hdf5_particles.h), when
 //                          output.hdf5 is on
 // Every file is written under a temporary name and renamed, and the .pvd is rewritten after
@@ -25,7 +28,8 @@ namespace slides {
 
 class RunOutput {
 public:
-    /// Creates the directory, removes the particle files and checkpoint of an earlier run
+    /// Keeps a reference to scene, which must outlive it. Creates the directory, removes the
+    /// particle files, deposit and checkpoint of an earlier run
     /// there and writes carrier.vti. With `resumed` (a restart, io/checkpoint.h), continues
     /// after those frames instead: the later frames of the interrupted run are removed, the
     /// series rewritten with the earlier ones, and particles.h5.partial continued.
@@ -44,6 +48,7 @@ public:
 
 private:
     std::filesystem::path directory_;
+    const Scene& scene_;
     PvdSeries series_;
     std::optional<ParticlesHdf5> hdf5_;
     ParticleFieldSet fields_;

@@ -1,6 +1,7 @@
 #include "slides/io/summary.h"
 
 #include "slides/core/name_table.h"
+#include "slides/surfaces/deposit_metrics.h"
 
 #include <cmath>
 
@@ -131,11 +132,27 @@ nlohmann::json sceneSettings(const Scene& scene) {
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},
                         {"integrator", nameOf(integratorNames(), scene.time.integrator)}};
+    const CollisionSettings& collisions = scene.collisions;
+    settings["collisions"] = {
+        {"model", nameOf(collisionModelNames(), collisions.model)},
+        {"restitution",
+         {{"model", nameOf(restitutionModelNames(), collisions.restitution.model)},
+          {"coefficient", collisions.restitution.coefficient},
+          {"yieldPressureFactor", collisions.restitution.yieldPressureFactor}}},
+        {"friction",
+         {{"static", collisions.friction.staticCoefficient},
+          {"dynamic", collisions.friction.dynamicCoefficient}}}};
+    settings["deposition"] = {{"adhesion", nameOf(adhesionModelNames(), scene.deposition.model)},
+                              {"adhesionFactor", scene.deposition.factor},
+                              {"hamakerConstant", scene.deposition.hamakerConstant},
+                              {"contactSeparation", scene.deposition.contactSeparation}};
     for (const auto& plane : scene.surfaces)
-        settings["surfaces"][plane.name] = {{"type", "plane"},
-                                            {"point", vec(plane.point)},
-                                            {"normal", vec(plane.normal)},
-                                            {"material", material(plane.material)}};
+        settings["surfaces"][plane.name] = {
+            {"type", "plane"},
+            {"point", vec(plane.point)},
+            {"normal", vec(plane.normal)},
+            {"interaction", nameOf(surfaceInteractionNames(), plane.interaction)},
+            {"material", material(plane.material)}};
     settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
     std::vector<std::string_view> fields;
     for (const auto& field : particleFieldNames())
@@ -164,6 +181,27 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
                             {"escaped", stepper.escaped()},
                             {"active", stepper.cloud().size()}};
     summary["arrivals"] = arrivals;
+    if (stepper.collisions() > 0 || scene.collisions.model != CollisionModel::none)
+        summary["collisions"] = {{"particlePairs", stepper.collisions()}};
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        const PlaneSurface& plane = scene.surfaces[s];
+        if (plane.interaction == SurfaceInteraction::absorb) continue;
+        const long rebounds = stepper.surfaceImpacts().rebounds()[s];
+        summary["rebounds"][plane.name] = rebounds;
+        if (plane.interaction != SurfaceInteraction::deposit) continue;
+        const DepositMetrics deposit =
+            depositMetrics(plane, static_cast<int>(s), stepper.arrivals(), stepper.injected());
+        summary["deposition"][plane.name] = {
+            {"stuck", deposit.stuck},
+            {"depositedFraction", deposit.fraction},
+            {"depositHeight", deposit.height},
+            {"depositHeightToNozzleRadius", deposit.height / scene.nozzle.radius},
+            {"meanRadius", deposit.meanRadius},
+            {"lowestCentre", deposit.lowestCentre},
+            {"highestCentre", deposit.highestCentre},
+            {"note", "Eq. 5.12: n_dep = stuck / injected, h_dep = (x_max + R_av) - (x_min - "
+                     "R_av), x = centre height above the plane"}};
+    }
 
     const double meanRadius = scene.particles.radius.meanRadius();
     summary["responseTime"] = {

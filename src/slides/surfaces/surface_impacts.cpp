@@ -16,32 +16,55 @@ SurfaceImpacts::SurfaceImpacts(const Scene& scene)
 ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
                                   const Vec3& startVelocity, double stepLength, double stepEnd,
                                   Arrival& arrival) {
+    Path path{start, startVelocity, stepLength};
+    ImpactResult result = ImpactResult::none;
+    // A rebound can meet another surface, or the deposit, in the rest of the step.
+    for (int contact = 0; contact < maxContactsPerStep; ++contact) {
+        const ImpactResult impact = meetFirst(cloud, i, path, stepEnd, arrival);
+        if (impact != ImpactResult::rebounded)
+            return impact == ImpactResult::none ? result : impact;
+        result = ImpactResult::rebounded;
+    }
+    return result;
+}
+
+ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path& path,
+                                       double stepEnd, Arrival& arrival) {
     Vec3& x = cloud.position[i];
     Vec3& v = cloud.velocity[i];
     const double radius = cloud.radius[i];
+    const auto velocityAt = [&](double s) { return path.velocity + s * (v - path.velocity); };
+    const auto centreAt = [&](double s) { return path.start + s * (x - path.start); };
+    // Only a touch while approaching counts: one that starts on a surface and leaves does not.
     int surface = -1;
     double fraction = 2.0;
     for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
-        const auto touch = planeContactFraction(scene_.surfaces[s], start, x, radius);
-        if (touch && *touch < fraction) {
+        const PlaneSurface& plane = scene_.surfaces[s];
+        const auto touch = planeContactFraction(plane, path.start, x, radius);
+        if (touch && *touch < fraction && velocityAt(*touch).dot(plane.normal) < 0) {
             fraction = *touch;
             surface = static_cast<int>(s);
         }
     }
-    const auto depositTouch = deposit_.firstTouch(start, x, radius);
-    const bool onDeposit = depositTouch && depositTouch->fraction < fraction;
-    if (onDeposit) {
-        fraction = depositTouch->fraction;
-        surface = deposit_.surface(depositTouch->particle);
+    const auto depositTouch = deposit_.firstTouch(path.start, x, radius);
+    bool onDeposit = false;
+    if (depositTouch && depositTouch->fraction < fraction) {
+        const Vec3 away =
+            centreAt(depositTouch->fraction) - deposit_.position(depositTouch->particle);
+        if (velocityAt(depositTouch->fraction).dot(away) < 0) {
+            onDeposit = true;
+            fraction = depositTouch->fraction;
+            surface = deposit_.surface(depositTouch->particle);
+        }
     }
     if (surface < 0) return ImpactResult::none;
 
     const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
-    const Vec3 centre = start + fraction * (x - start);
-    const Vec3 contactVelocity = startVelocity + fraction * (v - startVelocity);
+    const Vec3 centre = centreAt(fraction);
+    const Vec3 contactVelocity = velocityAt(fraction);
     const double temperature = cloud.temperature.empty() ? 0.0 : cloud.temperature[i];
     const auto arrive = [&] {
-        arrival = {cloud.id[i], surface,         stepEnd - (1 - fraction) * stepLength,
+        arrival = {cloud.id[i], surface,         stepEnd - (1 - fraction) * path.length,
                    centre,      contactVelocity, radius,
                    temperature};
         return ImpactResult::arrived;
@@ -52,7 +75,6 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
                             ? (centre - deposit_.position(depositTouch->particle)).normalized()
                             : plane.normal;
     const double normalSpeed = -contactVelocity.dot(normal);
-    if (normalSpeed <= 0) return ImpactResult::none; // touching, but moving away
     const double mass = 4.0 / 3.0 * M_PI * radius * radius * radius * scene_.particles.density;
     const MaterialSettings& particleMaterial = scene_.particles.material;
     const ContactBody particle{mass, radius, &particleMaterial};
@@ -73,9 +95,11 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
     const Vec3 impulse = contactImpulse(body, rigid, normal, e, scene_.collisions.friction);
     applyImpulse(body, rigid, normal, impulse);
     const Vec3 change = body.velocity - contactVelocity;
+    const double remaining = (1 - fraction) * path.length;
     v += change;
-    x += (1 - fraction) * stepLength * change;
+    x += remaining * change;
     cloud.angularVelocity[i] = body.angularVelocity;
+    path = {centre, body.velocity, remaining};
     ++rebounds_[static_cast<std::size_t>(surface)];
     return ImpactResult::rebounded;
 }

@@ -11,8 +11,10 @@
 //   rebound — impulse J against a rigid body (collide/impulse.h, restitution from
 //             physics/restitution.h): v₁ += J/m, ω += r × J / I, and x₁ += (1 − s) h J/m, the
 //             rest of the step flown with the new velocity.
-// A hit on the deposit inherits the interaction and adhesion of the surface it grew on, with
-// the particles' own material on both sides.
+// After a rebound the rest of the chord, from the contact point, is searched again (up to
+// four contacts a step), so a particle bouncing in a corner or off the deposit onto the target
+// is caught. A hit on the deposit inherits the interaction and adhesion of the surface it grew on,
+// with the particles' own material on both sides.
 //
 //     surfaces { target { type plane; point (0.06 0 0); normal (-1 0 0); interaction deposit; } }
 #pragma once
@@ -50,6 +52,19 @@ public:
     const std::vector<long>& rebounds() const { return rebounds_; }
 
 private:
+    /// What is left of a step's path: from start with startVelocity, over length [s].
+    struct Path {
+        Vec3 start;
+        Vec3 velocity;
+        double length;
+    };
+    /// The first contact on the path; a rebound leaves path at the contact point.
+    ImpactResult meetFirst(ParticleCloud& cloud, std::size_t i, Path& path, double stepEnd,
+                           Arrival& arrival);
+
+    /// Contacts followed in one step; a particle still bouncing after them flies on.
+    static constexpr int maxContactsPerStep = 4;
+
     const Scene& scene_;
     Deposit deposit_;
     std::vector<long> rebounds_;
