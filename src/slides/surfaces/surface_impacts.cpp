@@ -33,15 +33,20 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     Vec3& x = cloud.position[i];
     Vec3& v = cloud.velocity[i];
     const double radius = cloud.radius[i];
-    const auto velocityAt = [&](double s) { return path.velocity + s * (v - path.velocity); };
-    const auto centreAt = [&](double s) { return path.start + s * (x - path.start); };
+    const auto velocityAt = [&](double s) -> Vec3 {
+        return path.velocity + s * (v - path.velocity);
+    };
+    const auto centreAt = [&](double s) -> Vec3 { return path.start + s * (x - path.start); };
+    // A path that starts in contact was pushed there within the step (by a collision): the
+    // end velocity is the one that meets the surface.
+    const auto contactVelocityAt = [&](double s) -> Vec3 { return s > 0 ? velocityAt(s) : v; };
     // Only a touch while approaching counts: one that starts on a surface and leaves does not.
     int surface = -1;
     double fraction = 2.0;
     for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene_.surfaces[s];
         const auto touch = planeContactFraction(plane, path.start, x, radius);
-        if (touch && *touch < fraction && velocityAt(*touch).dot(plane.normal) < 0) {
+        if (touch && *touch < fraction && contactVelocityAt(*touch).dot(plane.normal) < 0) {
             fraction = *touch;
             surface = static_cast<int>(s);
         }
@@ -51,7 +56,7 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (depositTouch && depositTouch->fraction < fraction) {
         const Vec3 away =
             centreAt(depositTouch->fraction) - deposit_.position(depositTouch->particle);
-        if (velocityAt(depositTouch->fraction).dot(away) < 0) {
+        if (contactVelocityAt(depositTouch->fraction).dot(away) < 0) {
             onDeposit = true;
             fraction = depositTouch->fraction;
             surface = deposit_.surface(depositTouch->particle);
@@ -60,8 +65,16 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (surface < 0) return ImpactResult::none;
 
     const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
-    const Vec3 centre = centreAt(fraction);
-    const Vec3 contactVelocity = velocityAt(fraction);
+    const Vec3 contactVelocity = contactVelocityAt(fraction);
+    const Vec3 normal =
+        onDeposit ? (centreAt(fraction) - deposit_.position(depositTouch->particle)).normalized()
+                  : plane.normal;
+    // At the touch the spheres just meet; a path that started overlapping is set back to that.
+    const Vec3 centre =
+        onDeposit ? Vec3(deposit_.position(depositTouch->particle) +
+                         (radius + deposit_.radius(depositTouch->particle)) * normal)
+                  : Vec3(centreAt(fraction) -
+                         ((centreAt(fraction) - plane.point).dot(normal) - radius) * normal);
     const double temperature = cloud.temperature.empty() ? 0.0 : cloud.temperature[i];
     const auto arrive = [&] {
         arrival = {cloud.id[i], surface,         stepEnd - (1 - fraction) * path.length,
@@ -71,9 +84,6 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     };
     if (plane.interaction == SurfaceInteraction::absorb) return arrive();
 
-    const Vec3 normal = onDeposit
-                            ? (centre - deposit_.position(depositTouch->particle)).normalized()
-                            : plane.normal;
     const double normalSpeed = -contactVelocity.dot(normal);
     const double mass = 4.0 / 3.0 * M_PI * radius * radius * radius * scene_.particles.density;
     const MaterialSettings& particleMaterial = scene_.particles.material;
