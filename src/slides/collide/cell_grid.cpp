@@ -8,6 +8,21 @@ CellGrid::Cell CellGrid::cellOf(const Vec3& point) const {
             static_cast<std::int64_t>(std::floor(point.z() / cellSize_))};
 }
 
+const std::array<std::array<std::int64_t, 3>, 13>& CellGrid::forwardOffsets() {
+    static const auto offsets = [] {
+        std::array<std::array<std::int64_t, 3>, 13> forward{};
+        std::size_t n = 0;
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz)
+                    if (std::array<std::int64_t, 3>{dx, dy, dz} >
+                        std::array<std::int64_t, 3>{0, 0, 0})
+                        forward[n++] = {dx, dy, dz};
+        return forward;
+    }();
+    return offsets;
+}
+
 std::size_t CellGrid::bucketOf(const Cell& cell) const {
     // The primes of Teschner et al. (2003), then a multiplicative mix of the high bits.
     const auto key = static_cast<std::uint64_t>(cell[0]) * 73856093u ^
@@ -23,6 +38,7 @@ void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     bucketStart_.assign(2 * count + 2, 0);
     cells_.resize(count);
     sorted_.resize(count);
+    sortedCells_.resize(count);
     auto& bucket = bucketOfPoint_;
     bucket.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -33,8 +49,11 @@ void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     for (std::size_t b = 1; b < bucketStart_.size(); ++b) bucketStart_[b] += bucketStart_[b - 1];
     auto& next = nextSlot_;
     next.assign(bucketStart_.begin(), bucketStart_.end() - 1);
-    for (std::size_t i = 0; i < count; ++i)
-        sorted_[next[bucket[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t slot = next[bucket[i]]++;
+        sorted_[slot] = static_cast<std::uint32_t>(i);
+        sortedCells_[slot] = cells_[i];
+    }
 }
 
 } // namespace slides

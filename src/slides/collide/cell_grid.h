@@ -27,12 +27,16 @@ public:
     std::size_t size() const { return cells_.size(); }
     double cellSize() const { return cellSize_; }
 
-    /// Calls visit(j) for every point j > i in the cell of point i or the 26 around it: each
-    /// pair of points closer than one cell edge is visited exactly once over all i.
+    /// Calls visit(j) for the points j of the cells "after" point i's (j > i in its own cell,
+    /// every point in 13 of its 26 neighbours, one of each opposite pair): over all i, each
+    /// pair of points closer than one cell edge is visited exactly once.
     template <typename Visit> void forEachNeighbourAfter(std::uint32_t i, Visit visit) const {
-        forEachPointNear(cells_[i], 1, [&](std::uint32_t j) {
+        const Cell& own = cells_[i];
+        forEachPointIn(own, [&](std::uint32_t j) {
             if (j > i) visit(j);
         });
+        for (const auto& offset : forwardOffsets())
+            forEachPointIn({own[0] + offset[0], own[1] + offset[1], own[2] + offset[2]}, visit);
     }
 
     /// Calls visit(j) for every point j within the cells that a ball of radius reach around
@@ -48,25 +52,31 @@ private:
     Cell cellOf(const Vec3& point) const;
     std::size_t bucketOf(const Cell& cell) const;
 
+    /// The 13 neighbour offsets that come after (0, 0, 0) in lexicographic order.
+    static const std::array<std::array<std::int64_t, 3>, 13>& forwardOffsets();
+
+    template <typename Visit> void forEachPointIn(const Cell& cell, Visit visit) const {
+        const std::size_t bucket = bucketOf(cell);
+        for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
+            const Cell& other = sortedCells_[k]; // a bucket may hold several cells
+            if (other[0] == cell[0] && other[1] == cell[1] && other[2] == cell[2])
+                visit(sorted_[k]);
+        }
+    }
+
     template <typename Visit>
     void forEachPointNear(const Cell& centre, std::int64_t range, Visit visit) const {
         for (std::int64_t dx = -range; dx <= range; ++dx)
             for (std::int64_t dy = -range; dy <= range; ++dy)
-                for (std::int64_t dz = -range; dz <= range; ++dz) {
-                    const Cell cell{centre[0] + dx, centre[1] + dy, centre[2] + dz};
-                    const std::size_t bucket = bucketOf(cell);
-                    for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1];
-                         ++k) {
-                        const std::uint32_t j = sorted_[k];
-                        if (cells_[j] == cell) visit(j);
-                    }
-                }
+                for (std::int64_t dz = -range; dz <= range; ++dz)
+                    forEachPointIn({centre[0] + dx, centre[1] + dy, centre[2] + dz}, visit);
     }
 
     double cellSize_ = 1;
     std::vector<Cell> cells_;                ///< each point's cell
     std::vector<std::uint32_t> bucketStart_; ///< bucket b holds sorted_[start[b], start[b+1])
     std::vector<std::uint32_t> sorted_;      ///< point indices ordered by bucket
+    std::vector<Cell> sortedCells_;          ///< their cells, beside them for locality
     std::vector<std::size_t> bucketOfPoint_; ///< scratch of build
     std::vector<std::uint32_t> nextSlot_;    ///< scratch of build
 };

@@ -21,11 +21,15 @@ void ParticleCollisions::findContacts(const ParticleCloud& cloud,
                                       const std::vector<Vec3>& startPositions) {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
     double largestRadius = 0, longestChord = 0;
+    midpoints_.resize(cloud.size());
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         largestRadius = std::max(largestRadius, cloud.radius[i]);
         longestChord = std::max(longestChord, (cloud.position[i] - startPositions[i]).norm());
+        midpoints_[i] = 0.5 * (startPositions[i] + cloud.position[i]);
     }
-    grid_.build(cloud.position, 2 * largestRadius + 2 * longestChord);
+    // Spheres touching at fraction s are |d(s)| = R_a + R_b apart, and their chords' midpoints
+    // at most that plus |s − ½| |Δd| ≤ d_max further: cells of 2 R_max + d_max hold every pair.
+    grid_.build(midpoints_, 2 * largestRadius + longestChord);
 
     // Each thread keeps the contacts of its own contiguous block of particles; joined in
     // thread order they are ordered by the first particle, whatever the thread count.

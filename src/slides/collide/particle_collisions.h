@@ -1,9 +1,9 @@
 // ParticleCollisions: the collide step between moving particles, after the stream step moved
 // them (collide-and-stream, Section 4.2.2 of the reference).
 //
-// 1. Broad phase: the end positions are binned in a hashed cell grid (collide/cell_grid.h)
-//    with cells of edge 2 R_max + 2 d_max (d_max the longest chord of the step), so that any
-//    two particles that touched during the step lie in the same or adjacent cells.
+// 1. Broad phase: the midpoints of the step's chords are binned in a hashed cell grid
+//    (collide/cell_grid.h) with cells of edge 2 R_max + d_max (d_max the longest chord), so
+//    that any two particles that touched during the step lie in the same or adjacent cells.
 // 2. Narrow phase, in parallel: each candidate pair's first touch along the chords
 //    (collide/swept_contact.h).
 // 3. Contacts are resolved one after another in the order of their touch (ties by particle
@@ -48,6 +48,7 @@ private:
     const Scene& scene_;
     double particleDensity_;
     CellGrid grid_;
+    std::vector<Vec3> midpoints_; ///< of the step's chords, binned
     std::vector<ParticleContact> contacts_;
     long collisions_ = 0;
 };
