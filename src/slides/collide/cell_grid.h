@@ -27,16 +27,34 @@ public:
     std::size_t size() const { return cells_.size(); }
     double cellSize() const { return cellSize_; }
 
-    /// Calls visit(j) for the points j of the cells "after" point i's (j > i in its own cell,
-    /// every point in 13 of its 26 neighbours, one of each opposite pair): over all i, each
-    /// pair of points closer than one cell edge is visited exactly once.
-    template <typename Visit> void forEachNeighbourAfter(std::uint32_t i, Visit visit) const {
-        const Cell& own = cells_[i];
-        forEachPointIn(own, [&](std::uint32_t j) {
-            if (j > i) visit(j);
-        });
-        for (const auto& offset : forwardOffsets())
-            forEachPointIn({own[0] + offset[0], own[1] + offset[1], own[2] + offset[2]}, visit);
+    /// Buckets of the grid, for splitting forEachPairInBuckets among threads.
+    std::size_t bucketCount() const { return bucketStart_.size() - 1; }
+
+    /// Calls visit(i, j) for every pair of points in the same cell or in neighbouring cells
+    /// whose first cell lies in buckets [first, last): over all buckets, each pair of points
+    /// closer than one cell edge exactly once. Neighbour cells are looked up once per occupied
+    /// cell (13 of the 26, one of each opposite pair), not once per point.
+    template <typename Visit>
+    void forEachPairInBuckets(std::size_t first, std::size_t last, Visit visit) const {
+        for (std::size_t bucket = first; bucket < last; ++bucket) {
+            const std::uint32_t begin = bucketStart_[bucket], end = bucketStart_[bucket + 1];
+            for (std::uint32_t k = begin; k < end; ++k) {
+                const Cell& cell = sortedCells_[k];
+                if (!firstOfItsCell(k, begin)) continue; // a cell sharing the bucket, done
+                for (std::uint32_t a = k; a < end; ++a) {
+                    if (!sameCell(sortedCells_[a], cell)) continue;
+                    for (std::uint32_t b = a + 1; b < end; ++b)
+                        if (sameCell(sortedCells_[b], cell)) visit(sorted_[a], sorted_[b]);
+                }
+                for (const auto& offset : forwardOffsets()) {
+                    const Cell next{cell[0] + offset[0], cell[1] + offset[1], cell[2] + offset[2]};
+                    forEachPointIn(next, [&](std::uint32_t j) {
+                        for (std::uint32_t a = k; a < end; ++a)
+                            if (sameCell(sortedCells_[a], cell)) visit(sorted_[a], j);
+                    });
+                }
+            }
+        }
     }
 
     /// Calls visit(j) for every point j within the cells that a ball of radius reach around
@@ -52,15 +70,24 @@ private:
     Cell cellOf(const Vec3& point) const;
     std::size_t bucketOf(const Cell& cell) const;
 
+    static bool sameCell(const Cell& a, const Cell& b) {
+        return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    }
+
+    /// Whether slot k holds the first point of its cell within the bucket starting at begin.
+    bool firstOfItsCell(std::uint32_t k, std::uint32_t begin) const {
+        for (std::uint32_t earlier = begin; earlier < k; ++earlier)
+            if (sameCell(sortedCells_[earlier], sortedCells_[k])) return false;
+        return true;
+    }
+
     /// The 13 neighbour offsets that come after (0, 0, 0) in lexicographic order.
     static const std::array<std::array<std::int64_t, 3>, 13>& forwardOffsets();
 
     template <typename Visit> void forEachPointIn(const Cell& cell, Visit visit) const {
         const std::size_t bucket = bucketOf(cell);
         for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
-            const Cell& other = sortedCells_[k]; // a bucket may hold several cells
-            if (other[0] == cell[0] && other[1] == cell[1] && other[2] == cell[2])
-                visit(sorted_[k]);
+            if (sameCell(sortedCells_[k], cell)) visit(sorted_[k]); // buckets can share cells
         }
     }
 

@@ -31,8 +31,10 @@ void ParticleCollisions::findContacts(const ParticleCloud& cloud,
     // at most that plus |s − ½| |Δd| ≤ d_max further: cells of 2 R_max + d_max hold every pair.
     grid_.build(midpoints_, 2 * largestRadius + longestChord);
 
-    // Each thread keeps the contacts of its own contiguous block of particles; joined in
-    // thread order they are ordered by the first particle, whatever the thread count.
+    // Each thread keeps the contacts of its own block of buckets; the order of the joined list
+    // does not matter, as it is sorted below.
+    const auto buckets = static_cast<std::ptrdiff_t>(grid_.bucketCount());
+    constexpr std::ptrdiff_t chunk = 4096;
     std::vector<std::vector<ParticleContact>> perThread;
 #pragma omp parallel
     {
@@ -45,14 +47,15 @@ void ParticleCollisions::findContacts(const ParticleCloud& cloud,
         auto& found = perThread[0];
 #endif
 #pragma omp for schedule(static)
-        for (std::ptrdiff_t i = 0; i < count; ++i) {
-            const auto a = static_cast<std::uint32_t>(i);
-            grid_.forEachNeighbourAfter(a, [&](std::uint32_t b) {
-                const auto fraction = sweptContactFraction(startPositions[a] - startPositions[b],
-                                                           cloud.position[a] - cloud.position[b],
-                                                           cloud.radius[a] + cloud.radius[b]);
-                if (fraction) found.push_back({a, b, *fraction});
-            });
+        for (std::ptrdiff_t first = 0; first < buckets; first += chunk) {
+            const auto last = static_cast<std::size_t>(std::min(first + chunk, buckets));
+            grid_.forEachPairInBuckets(
+                static_cast<std::size_t>(first), last, [&](std::uint32_t a, std::uint32_t b) {
+                    const auto fraction = sweptContactFraction(
+                        startPositions[a] - startPositions[b],
+                        cloud.position[a] - cloud.position[b], cloud.radius[a] + cloud.radius[b]);
+                    if (fraction) found.push_back({a, b, *fraction});
+                });
         }
     }
     contacts_.clear();
