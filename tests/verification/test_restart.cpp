@@ -31,8 +31,9 @@ using test::slurp;
 /// checkpoint must carry.
 enum class ExtraPhysics {
     none,
-    unsteadyForces,    ///< history memory, spin and the rest of the Maxey–Riley state
-    dispersionAndHeat, ///< eddy states with their random-event counters, temperatures
+    unsteadyForces,       ///< history memory, spin and the rest of the Maxey–Riley state
+    dispersionAndHeat,    ///< eddy states with their random-event counters, temperatures
+    collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
 };
 
 /// Inserts entry after the first occurrence of anchor in text.
@@ -58,13 +59,26 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
         insertAfter(text, "    density     5680;\n",
                     "    specificHeat 460;\n    injectionTemperature 600;\n");
     }
+    if (physics == ExtraPhysics::collisionsAndDeposit) {
+        insertAfter(text, "        normal  (-1 0 0);\n", "        interaction deposit;\n");
+        insertAfter(
+            text,
+            "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n",
+            "collisions { model impulse; }\ndeposition { adhesionFactor 5000; }\n");
+        // Most of the deposit forms by 15 ms; a few particles would bounce on to 0.1 s.
+        const auto end = text.find("endTime         0.1;");
+        ASSERT_NE(end, std::string::npos);
+        text.replace(end, 20, "endTime         0.015;");
+    }
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
 
 std::vector<std::string> frameFiles(const fs::path& directory) {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(directory))
-        if (entry.path().extension() == ".vtp") names.push_back(entry.path().filename());
+        if (entry.path().extension() == ".vtp" &&
+            entry.path().filename().string().starts_with("particles_"))
+            names.push_back(entry.path().filename());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -135,6 +149,10 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
         EXPECT_EQ(slurp(resumed / frame), slurp(reference / frame)) << frame;
     EXPECT_EQ(slurp(resumed / "particles.pvd"), slurp(reference / "particles.pvd"));
     EXPECT_EQ(slurp(resumed / "particles.xmf"), slurp(reference / "particles.xmf"));
+    for (const char* deposit : {"deposit.vtp", "deposit_target.vti"})
+        EXPECT_EQ(fs::exists(reference / deposit) ? slurp(resumed / deposit) : "",
+                  fs::exists(reference / deposit) ? slurp(reference / deposit) : "")
+            << deposit;
     EXPECT_EQ(resultsOf(resumed), resultsOf(reference));
     EXPECT_FALSE(fs::exists(resumed / "particles.h5.partial"));
 
@@ -157,7 +175,8 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
 }
 
 std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
-    const char* physics[] = {"", "WithUnsteadyForces", "WithDispersionAndHeat"};
+    const char* physics[] = {"", "WithUnsteadyForces", "WithDispersionAndHeat",
+                             "WithCollisionsAndDeposit"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
@@ -168,7 +187,8 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                          testing::Values(KillMoment{0, ExtraPhysics::none},
                                          KillMoment{150, ExtraPhysics::none},
                                          KillMoment{100, ExtraPhysics::unsteadyForces},
-                                         KillMoment{100, ExtraPhysics::dispersionAndHeat}),
+                                         KillMoment{100, ExtraPhysics::dispersionAndHeat},
+                                         KillMoment{100, ExtraPhysics::collisionsAndDeposit}),
                          killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.

@@ -41,6 +41,8 @@ public:
 
     /// Contacts resolved so far (pairs that exchanged an impulse).
     long collisions() const { return collisions_; }
+    /// Continues the count of a checkpointed run.
+    void resume(long collisions) { collisions_ = collisions; }
 
 private:
     void findContacts(const ParticleCloud& cloud, const std::vector<Vec3>& startPositions);

@@ -39,7 +39,8 @@ bool Stepper::finished() const {
 }
 
 StepperCounters Stepper::counters() const {
-    return {time_, steps_, injector_.injected(), escaped_, particleSteps_};
+    return {time_,          steps_,       injector_.injected(), escaped_,
+            particleSteps_, collisions(), surfaces_.rebounds()};
 }
 
 void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
@@ -49,6 +50,8 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
     escaped_ = counters.escaped;
     particleSteps_ = counters.particleSteps;
     injector_.resumeAfter(counters.injected);
+    if (collisions_) collisions_->resume(counters.collisions);
+    surfaces_.resumeRebounds(counters.rebounds);
     if (cloud.stateWidth != cloud_.stateWidth)
         throw std::logic_error("checkpoint's model state does not fit the scene's models");
     cloud_ = std::move(cloud);

@@ -50,6 +50,8 @@ struct StepperCounters {
     long injected = 0;
     long escaped = 0;
     std::uint64_t particleSteps = 0;
+    long collisions = 0;        ///< particle–particle contacts
+    std::vector<long> rebounds; ///< per surface
 };
 
 class Stepper {

@@ -24,6 +24,7 @@
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace slides {
@@ -50,6 +51,12 @@ public:
     const Deposit& deposit() const { return deposit_; }
     /// Rebounds off each surface (and its deposit) so far.
     const std::vector<long>& rebounds() const { return rebounds_; }
+    /// Continues the counts of a checkpointed run (one per surface).
+    void resumeRebounds(std::vector<long> rebounds) {
+        if (rebounds.size() != rebounds_.size())
+            throw std::logic_error("checkpoint's rebound counts do not fit the scene's surfaces");
+        rebounds_ = std::move(rebounds);
+    }
 
 private:
     /// What is left of a step's path: from start with startVelocity, over length [s].
