@@ -193,10 +193,13 @@ def write_foam_field(path, field_class, dimensions, value):
 
 
 def frozen_velocity(source):
-    """simpleFoam's U with every patch `calculated` (the parcel solver only reads it)."""
+    """simpleFoam's U with every patch `calculated` at its solved values (the parcel solver only
+    reads U, and its cellPoint interpolation takes the boundary points' values from them): the
+    nozzle keeps its 25 m/s, the noSlip plate (no value written) is zero."""
     text = Path(source).read_text()
     start = text.index("boundaryField")
-    return text[:start] + 'boundaryField\n{\n    ".*" { type calculated; value uniform (0 0 0); }\n}\n'
+    boundary = re.sub(r"type\s+noSlip;", "type calculated; value uniform (0 0 0);", text[start:])
+    return text[:start] + re.sub(r"type\s+\w+;", "type calculated;", boundary)
 
 
 def write_positions(path, positions):
