@@ -137,7 +137,8 @@ int run(const Options& options) {
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double steppingSeconds = std::chrono::duration<double>(stepping).count();
     const auto summary = slides::runSummary(
-        scene, stepper, {wallSeconds, steppingSeconds, threads, carrier->describe()});
+        scene, stepper,
+        {wallSeconds, steppingSeconds, threads, carrier->describe(), carrier->boundaryNames()});
     output.finish(stepper, summary);
 
     if (!options.quiet) {
@@ -148,6 +149,12 @@ int run(const Options& options) {
         std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
                     stepper.injected(), stepper.arrivals().size(), stepper.escaped(),
                     stepper.cloud().size());
+        if (stepper.escaped() > 0) {
+            std::printf("  escaped through");
+            for (const auto& [exit, count] : summary["particles"]["escapedThrough"].items())
+                std::printf(" %s %ld", exit.c_str(), count.get<long>());
+            std::printf("\n");
+        }
         std::printf("results in %s/ (%zu frames)\n  open in ParaView:  paraview %s\n"
                     "  summary:           %s\n",
                     output.directory().c_str(), output.frames().size(),

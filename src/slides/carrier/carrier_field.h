@@ -69,6 +69,9 @@ public:
         sample(points, time, needs, out);
     }
 
+    /// Names of the boundary patches a point can leave through, by index (location −3 − index).
+    virtual std::vector<std::string> boundaryNames() const { return {}; }
+
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }
 

@@ -25,16 +25,19 @@
 
 namespace slides {
 
-enum class FoamInterpolation { cell, cellPoint };
+enum class FoamInterpolation { cell, cellPoint, lattice };
 
 struct FoamInterpolationName {
     FoamInterpolation value;
     std::string_view name;
 };
 
-/// How to add a scheme: an enumerator, its name here, its case in FoamInterpolator::value().
-inline constexpr std::array<FoamInterpolationName, 2> foamInterpolationNames() {
-    return {{{FoamInterpolation::cell, "cell"}, {FoamInterpolation::cellPoint, "cellPoint"}}};
+/// How to add a scheme: an enumerator, its name here, its case in FoamCarrier::sampleAt().
+/// lattice: cellPoint resampled onto a structured lattice (carrier/foam_lattice.h).
+inline constexpr std::array<FoamInterpolationName, 3> foamInterpolationNames() {
+    return {{{FoamInterpolation::cell, "cell"},
+             {FoamInterpolation::cellPoint, "cellPoint"},
+             {FoamInterpolation::lattice, "lattice"}}};
 }
 
 /// Point weights of one mesh: point value p = Σ weight·sample, where a sample is a cell value

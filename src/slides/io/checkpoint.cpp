@@ -125,6 +125,7 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     file.writeAttribute(g, "escaped", std::int64_t{counters.escaped});
     file.writeAttribute(g, "particleSteps", static_cast<std::int64_t>(counters.particleSteps));
     file.writeAttribute(g, "nextFrameTime", nextFrameTime);
+    writeColumn(file, g, "escapedThrough", counters.escapedThrough);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
     ParticleCloud::forEachArray(stepper.cloud(), [&](const char* name, const auto& array) {
@@ -185,6 +186,7 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
     state.counters.escaped = file.readInt64(g, "escaped");
     state.counters.particleSteps = static_cast<std::uint64_t>(file.readInt64(g, "particleSteps"));
     state.nextFrameTime = file.readDouble(g, "nextFrameTime");
+    state.counters.escapedThrough = file.readUInt64(g + "/escapedThrough");
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
     ParticleCloud::forEachArray(state.cloud, [&](const char* name, auto& array) {

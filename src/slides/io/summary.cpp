@@ -146,6 +146,15 @@ nlohmann::json sceneSettings(const Scene& scene) {
     return settings;
 }
 
+nlohmann::json escapedThrough(const Stepper& stepper, const std::vector<std::string>& patches) {
+    nlohmann::json counts = nlohmann::json::object();
+    const auto& exits = stepper.escapedThrough();
+    for (std::size_t exit = 0; exit < exits.size(); ++exit)
+        if (exits[exit] > 0)
+            counts[exit == 0 || exit > patches.size() ? "domain" : patches[exit - 1]] = exits[exit];
+    return counts;
+}
+
 nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics) {
     nlohmann::json summary;
     summary["slidesTrack"] = SLIDES_VERSION;
@@ -162,6 +171,7 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
                             {"injected", stepper.injected()},
                             {"arrived", arrived},
                             {"escaped", stepper.escaped()},
+                            {"escapedThrough", escapedThrough(stepper, metrics.boundaryNames)},
                             {"active", stepper.cloud().size()}};
     summary["arrivals"] = arrivals;
 
