@@ -6,6 +6,7 @@
 #include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/foam_locator.h"
+#include "slides/core/error.h"
 #include "slides/core/name_table.h"
 
 #include <gtest/gtest.h>
@@ -260,6 +261,9 @@ TEST(WedgeCarrier, SamplesTheRotatedSolutionIn3D) {
     ASSERT_NE(latticeCarrier.lattice(), nullptr);
     EXPECT_EQ(latticeCarrier.lattice()->frame().nodes[2], 1) << "the wedge's centre plane";
     EXPECT_NE(latticeCarrier.describe().find("against cellPoint"), std::string::npos);
+    FoamCarrierSettings tooFine = lattice;
+    tooFine.latticeSpacing = 1e-7; // 1e6 × 5e5 nodes: refused before allocating them
+    EXPECT_THROW(FoamCarrier(directory, tooFine), InputError);
     const FoamCarrier carrier(directory, {});
     ASSERT_TRUE(carrier.wedge().has_value());
     EXPECT_LT((carrier.wedge()->axis.cross(Vec3::UnitX())).norm(), 1e-12);
