@@ -73,7 +73,7 @@ nozzle
 carrier
 {{
     type        foamField;
-    foamFieldCoeffs {{ time latestTime; interpolation cellPoint; }}
+    foamFieldCoeffs {{ time latestTime; interpolation {interpolation}; }}
 }}
 
 particles
@@ -138,8 +138,9 @@ def link_mesh(case, target):
         mesh.symlink_to((Path(case) / "constant/polyMesh").resolve())
 
 
-def prepare_slides(case, work, count, radius, seed):
-    """WORK/slides: the mesh, the latest solution and the comparison's slidesProperties."""
+def prepare_slides(case, work, count, radius, seed, interpolation="cellPoint"):
+    """WORK/slides: the mesh, the latest solution and the comparison's slidesProperties
+    (interpolation: the foamFieldCoeffs entry, e.g. "lattice; latticeSpacing 5e-4")."""
     target = work / "slides"
     shutil.rmtree(target, ignore_errors=True)
     link_mesh(case, target)
@@ -149,7 +150,7 @@ def prepare_slides(case, work, count, radius, seed):
         standoff=STANDOFF, gas_density=GAS_DENSITY, gas_viscosity=GAS_VISCOSITY,
         injection_plane=INJECTION_PLANE, injection_radius=INJECTION_RADIUS, count=count,
         particle_density=PARTICLE_DENSITY, radius=radius, seed=seed, dt=DT, end_time=END_TIME,
-        frame_interval=FRAME_INTERVAL))
+        frame_interval=FRAME_INTERVAL, interpolation=interpolation))
     return target
 
 
