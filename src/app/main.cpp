@@ -136,9 +136,10 @@ int run(const Options& options) {
     progress.finish();
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double steppingSeconds = std::chrono::duration<double>(stepping).count();
-    const auto summary = slides::runSummary(
-        scene, stepper,
-        {wallSeconds, steppingSeconds, threads, carrier->describe(), carrier->boundaryNames()});
+    const auto summary =
+        slides::runSummary(scene, stepper,
+                           {wallSeconds, steppingSeconds, threads, carrier->describe(),
+                            carrier->boundaryNames(), carrier->figures()});
     output.finish(stepper, summary);
 
     if (!options.quiet) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <sys/wait.h>
@@ -98,6 +99,25 @@ TEST_F(FoamRun, ParticlesLeavingTheMeshEscape) {
         << slurp(case_ / "log");
     EXPECT_EQ(summary["particles"]["active"].get<long>(), 0);
     EXPECT_LT(summary["time"]["end"].get<double>(), 0.04) << "stopped when all had left";
+}
+
+// The lattice scheme on the uniform stream: the lattice reproduces it exactly (error 0 against
+// cellPoint, reported in summary.json), and the particles arrive as with cellPoint.
+TEST_F(FoamRun, LatticeSchemeReportsItsError) {
+    writeScene("target { type plane; point (0.08 0 0); normal (-1 0 0); }");
+    const auto text = slurp(case_ / "constant" / "slidesProperties");
+    std::ofstream(case_ / "constant" / "slidesProperties")
+        << std::regex_replace(text, std::regex("interpolation cellPoint;"),
+                              "interpolation lattice; latticeSpacing 0.002;");
+    ASSERT_EQ(runCli(case_.string() + " --quiet --threads 1", case_ / "log"), 0)
+        << slurp(case_ / "log");
+    const auto summary = nlohmann::json::parse(slurp(case_ / "slides" / "summary.json"));
+    EXPECT_EQ(summary["particles"]["arrived"]["target"].get<long>(), 200);
+    EXPECT_NEAR(summary["arrivals"]["target"]["impactSpeed"]["mean"].get<double>(), 4.0, 1e-9);
+    const auto& figures = summary["carrierFigures"];
+    EXPECT_EQ(figures["latticeSpacing"].get<double>(), 0.002);
+    EXPECT_LT(figures["latticeErrorMax"].get<double>(), 1e-12);
+    EXPECT_GT(figures["latticeErrorPoints"].get<double>(), 3000) << "of 4000 random points";
 }
 
 // A domain box ending before the outlet (x = 0.05 of 0.1 m): they leave through the box.

@@ -185,6 +185,11 @@ void FoamCarrier::buildLattice(const std::filesystem::path& caseDirectory) {
                   100.0 * static_cast<double>(lattice_->nodesInside()) / nodes, served, worst,
                   served > 0 ? std::sqrt(squares / served) : 0.0, reference, exact);
     latticeReport_ = text;
+    latticeFigures_ = {{"latticeSpacing", frame.spacing},
+                       {"latticeErrorMax", worst},
+                       {"latticeErrorRms", served > 0 ? std::sqrt(squares / served) : 0.0},
+                       {"latticeErrorPoints", served},
+                       {"latticeExactPathPoints", exact}};
 }
 
 Mat3 FoamCarrier::wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity,

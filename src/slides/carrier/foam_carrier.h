@@ -61,6 +61,9 @@ public:
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
     std::optional<Box> bounds() const override;
     std::vector<std::string> boundaryNames() const override;
+    /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against
+    /// cellPoint), latticeErrorPoints, latticeExactPathPoints (random points it does not serve).
+    std::vector<std::pair<std::string, double>> figures() const override { return latticeFigures_; }
 
 private:
     void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
@@ -85,6 +88,7 @@ private:
     std::vector<Mat3> cellGradients_;      ///< cell scheme only
     std::unique_ptr<FoamLattice> lattice_; ///< lattice scheme only
     std::string latticeReport_;
+    std::vector<std::pair<std::string, double>> latticeFigures_;
 };
 
 } // namespace slides

@@ -160,6 +160,8 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
     summary["slidesTrack"] = SLIDES_VERSION;
     summary["case"] = scene.caseDirectory.string();
     summary["carrier"] = metrics.carrier;
+    for (const auto& [name, value] : metrics.carrierFigures)
+        summary["carrierFigures"][name] = value;
 
     nlohmann::json arrived = nlohmann::json::object();
     nlohmann::json arrivals = nlohmann::json::object();
