@@ -73,7 +73,7 @@ nozzle
 carrier
 {{
     type        foamField;
-    foamFieldCoeffs {{ time latestTime; interpolation cellPoint; }}
+    foamFieldCoeffs {{ time latestTime; interpolation {interpolation}; }}
 }}
 
 particles
@@ -138,8 +138,9 @@ def link_mesh(case, target):
         mesh.symlink_to((Path(case) / "constant/polyMesh").resolve())
 
 
-def prepare_slides(case, work, count, radius, seed):
-    """WORK/slides: the mesh, the latest solution and the comparison's slidesProperties."""
+def prepare_slides(case, work, count, radius, seed, interpolation="cellPoint"):
+    """WORK/slides: the mesh, the latest solution and the comparison's slidesProperties
+    (interpolation: the foamFieldCoeffs entry, e.g. "lattice; latticeSpacing 5e-4")."""
     target = work / "slides"
     shutil.rmtree(target, ignore_errors=True)
     link_mesh(case, target)
@@ -149,7 +150,7 @@ def prepare_slides(case, work, count, radius, seed):
         standoff=STANDOFF, gas_density=GAS_DENSITY, gas_viscosity=GAS_VISCOSITY,
         injection_plane=INJECTION_PLANE, injection_radius=INJECTION_RADIUS, count=count,
         particle_density=PARTICLE_DENSITY, radius=radius, seed=seed, dt=DT, end_time=END_TIME,
-        frame_interval=FRAME_INTERVAL))
+        frame_interval=FRAME_INTERVAL, interpolation=interpolation))
     return target
 
 
@@ -193,10 +194,13 @@ def write_foam_field(path, field_class, dimensions, value):
 
 
 def frozen_velocity(source):
-    """simpleFoam's U with every patch `calculated` (the parcel solver only reads it)."""
+    """simpleFoam's U with every patch `calculated` at its solved values (the parcel solver only
+    reads U, and its cellPoint interpolation takes the boundary points' values from them): the
+    nozzle keeps its 25 m/s, the noSlip plate (no value written) is zero."""
     text = Path(source).read_text()
     start = text.index("boundaryField")
-    return text[:start] + 'boundaryField\n{\n    ".*" { type calculated; value uniform (0 0 0); }\n}\n'
+    boundary = re.sub(r"type\s+noSlip;", "type calculated; value uniform (0 0 0);", text[start:])
+    return text[:start] + re.sub(r"type\s+\w+;", "type calculated;", boundary)
 
 
 def write_positions(path, positions):

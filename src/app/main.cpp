@@ -136,8 +136,10 @@ int run(const Options& options) {
     progress.finish();
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     const double steppingSeconds = std::chrono::duration<double>(stepping).count();
-    const auto summary = slides::runSummary(
-        scene, stepper, {wallSeconds, steppingSeconds, threads, carrier->describe()});
+    const auto summary =
+        slides::runSummary(scene, stepper,
+                           {wallSeconds, steppingSeconds, threads, carrier->describe(),
+                            carrier->boundaryNames(), carrier->figures()});
     output.finish(stepper, summary);
 
     if (!options.quiet) {
@@ -148,6 +150,12 @@ int run(const Options& options) {
         std::printf("  injected %ld, arrived %zu, escaped %ld, still moving %zu\n",
                     stepper.injected(), stepper.arrivals().size(), stepper.escaped(),
                     stepper.cloud().size());
+        if (stepper.escaped() > 0) {
+            std::printf("  escaped through");
+            for (const auto& [exit, count] : summary["particles"]["escapedThrough"].items())
+                std::printf(" %s %ld", exit.c_str(), count.get<long>());
+            std::printf("\n");
+        }
         if (summary.contains("deposition"))
             for (const auto& [surface, deposit] : summary["deposition"].items())
                 std::printf("  deposit on %s: %ld stuck, n_dep = %.4g, h_dep = %.4g m (Eq. 5.12)\n",

@@ -6,6 +6,7 @@
 #include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/foam_locator.h"
+#include "slides/core/error.h"
 #include "slides/core/name_table.h"
 
 #include <gtest/gtest.h>
@@ -232,6 +233,8 @@ void writeVectorField(const std::filesystem::path& file, const FoamMesh& mesh,
 // its cells and faces: axisymmetric and linear in 3-D. Sampled at random 3-D points of the
 // swept volume, U and ∇U = diag(2, 3, 3) come back rotated to the point, exact to round-off:
 // the u_r = 3r profile is linear within the wedge, and the hoop term u_r/r = 3 restores ∂u_z/∂z.
+// The same with the lattice scheme: on the wedge's centre plane (one node across) the bilinear
+// lattice is exact for the linear field too, and describe() reports its error.
 TEST(WedgeCarrier, SamplesTheRotatedSolutionIn3D) {
     const auto directory =
         std::filesystem::temp_directory_path() / ("slides_wedge_" + std::to_string(::getpid()));
@@ -251,6 +254,16 @@ TEST(WedgeCarrier, SamplesTheRotatedSolutionIn3D) {
                 field.patchValues[p].push_back(linear(mesh.faceCentres[f]));
     writeVectorField(directory / "0" / "U", mesh, field);
 
+    FoamCarrierSettings lattice;
+    lattice.interpolation = FoamInterpolation::lattice;
+    lattice.latticeSpacing = 0.004;
+    const FoamCarrier latticeCarrier(directory, lattice);
+    ASSERT_NE(latticeCarrier.lattice(), nullptr);
+    EXPECT_EQ(latticeCarrier.lattice()->frame().nodes[2], 1) << "the wedge's centre plane";
+    EXPECT_NE(latticeCarrier.describe().find("against cellPoint"), std::string::npos);
+    FoamCarrierSettings tooFine = lattice;
+    tooFine.latticeSpacing = 1e-7; // 1e6 × 5e5 nodes: refused before allocating them
+    EXPECT_THROW(FoamCarrier(directory, tooFine), InputError);
     const FoamCarrier carrier(directory, {});
     ASSERT_TRUE(carrier.wedge().has_value());
     EXPECT_LT((carrier.wedge()->axis.cross(Vec3::UnitX())).norm(), 1e-12);
@@ -263,11 +276,15 @@ TEST(WedgeCarrier, SamplesTheRotatedSolutionIn3D) {
         points.emplace_back(0.1 * unit(random), radius * std::cos(angle), radius * std::sin(angle));
     }
     CarrierSample sample;
-    carrier.sample(points, 0.0, CarrierNeeds{true, false, false}, sample);
     const Mat3 gradient = Vec3(2, 3, 3).asDiagonal();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        EXPECT_LT((sample.velocity[i] - linear(points[i])).norm(), 1e-12) << points[i].transpose();
-        EXPECT_LT((sample.velocityGradient[i] - gradient).norm(), 1e-8) << points[i].transpose();
+    for (const FoamCarrier* scheme : {&carrier, &latticeCarrier}) {
+        scheme->sample(points, 0.0, CarrierNeeds{true, false, false}, sample);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            EXPECT_LT((sample.velocity[i] - linear(points[i])).norm(), 1e-12)
+                << points[i].transpose();
+            EXPECT_LT((sample.velocityGradient[i] - gradient).norm(), 1e-8)
+                << points[i].transpose();
+        }
     }
     // Beyond the outer radius: outside, still gas, and the walk names the wall it crossed.
     std::vector<std::int32_t> location{-1};

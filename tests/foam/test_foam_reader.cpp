@@ -184,6 +184,16 @@ TEST_F(BadField, UniformAndPatchValues) {
     EXPECT_TRUE(field.patchValues[1].empty());
 }
 
+// A noSlip wall writes no value (simpleFoam's U of impingingJet's plate): it is zero, not left
+// to the cells as zeroGradient (which put U ≈ 0.7 m/s at the plate's points in the jet).
+TEST_F(BadField, NoSlipWallIsAtRest) {
+    writeField("volVectorField", "internalField uniform (1 2 3);\nboundaryField\n{\n"
+                                 " walls { type noSlip; }\n outlet { type zeroGradient; }\n}\n");
+    const auto field = readFoamVolField<Vec3>(directory_ / "0", "p", mesh_);
+    EXPECT_EQ(field.patchValues[2], std::vector<Vec3>(12, Vec3::Zero()));
+    EXPECT_TRUE(field.patchValues[1].empty());
+}
+
 TEST_F(BadField, TimeDirectories) {
     for (const char* time : {"0.5", "10", "2e-1"}) {
         std::filesystem::create_directories(directory_ / time);

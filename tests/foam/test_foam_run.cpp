@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <sys/wait.h>
@@ -85,15 +86,49 @@ TEST_F(FoamRun, TracksThroughTheWedgeSolutionTo3DTarget) {
     EXPECT_NE(summary["carrier"].get<std::string>().find("axisymmetric wedge"), std::string::npos);
 }
 
-// Without a surface they leave the mesh through its outlet: escaped, none left moving.
+// Without a surface they leave the mesh through its outlet: escaped, none left moving, and
+// counted by the patch they crossed.
 TEST_F(FoamRun, ParticlesLeavingTheMeshEscape) {
     writeScene("");
-    ASSERT_EQ(runCli(case_.string() + " --quiet --threads 1 --time 0", case_ / "log"), 0)
+    ASSERT_EQ(runCli(case_.string() + " --threads 1 --time 0", case_ / "log"), 0)
         << slurp(case_ / "log");
     const auto summary = nlohmann::json::parse(slurp(case_ / "slides" / "summary.json"));
     EXPECT_EQ(summary["particles"]["escaped"].get<long>(), 200);
+    EXPECT_EQ(summary["particles"]["escapedThrough"], nlohmann::json({{"outlet", 200}}));
+    EXPECT_NE(slurp(case_ / "log").find("escaped through outlet 200"), std::string::npos)
+        << slurp(case_ / "log");
     EXPECT_EQ(summary["particles"]["active"].get<long>(), 0);
     EXPECT_LT(summary["time"]["end"].get<double>(), 0.04) << "stopped when all had left";
+}
+
+// The lattice scheme on the uniform stream: the lattice reproduces it exactly (error 0 against
+// cellPoint, reported in summary.json), and the particles arrive as with cellPoint.
+TEST_F(FoamRun, LatticeSchemeReportsItsError) {
+    writeScene("target { type plane; point (0.08 0 0); normal (-1 0 0); }");
+    const auto text = slurp(case_ / "constant" / "slidesProperties");
+    std::ofstream(case_ / "constant" / "slidesProperties")
+        << std::regex_replace(text, std::regex("interpolation cellPoint;"),
+                              "interpolation lattice; latticeSpacing 0.002;");
+    ASSERT_EQ(runCli(case_.string() + " --quiet --threads 1", case_ / "log"), 0)
+        << slurp(case_ / "log");
+    const auto summary = nlohmann::json::parse(slurp(case_ / "slides" / "summary.json"));
+    EXPECT_EQ(summary["particles"]["arrived"]["target"].get<long>(), 200);
+    EXPECT_NEAR(summary["arrivals"]["target"]["impactSpeed"]["mean"].get<double>(), 4.0, 1e-9);
+    const auto& figures = summary["carrierFigures"];
+    EXPECT_EQ(figures["latticeSpacing"].get<double>(), 0.002);
+    EXPECT_LT(figures["latticeErrorMax"].get<double>(), 1e-12);
+    EXPECT_GT(figures["latticeErrorPoints"].get<double>(), 3000) << "of 4000 random points";
+}
+
+// A domain box ending before the outlet (x = 0.05 of 0.1 m): they leave through the box.
+TEST_F(FoamRun, EscapesThroughTheDomainBoxAreCountedAsDomain) {
+    writeScene("");
+    std::ofstream(case_ / "constant" / "slidesProperties", std::ios::app)
+        << "domain { min (-1 -1 -1); max (0.05 1 1); }\n";
+    ASSERT_EQ(runCli(case_.string() + " --quiet --threads 1 --time 0", case_ / "log"), 0)
+        << slurp(case_ / "log");
+    const auto summary = nlohmann::json::parse(slurp(case_ / "slides" / "summary.json"));
+    EXPECT_EQ(summary["particles"]["escapedThrough"], nlohmann::json({{"domain", 200}}));
 }
 
 // Bad input: a time that does not exist, and a missing velocity field, are exit status 2

@@ -150,7 +150,7 @@ TEST_P(ObliqueWallImpact, MatchesTheRigidBodyStickSlipSolution) {
     EXPECT_NEAR(v.y(), vtAfter, tolerance);
     EXPECT_NEAR(spin.z() * radius, -spinAfter * radius, tolerance);
     EXPECT_NEAR(std::atan2(v.y(), -v.x()), std::atan2(vtAfter, e * vn), 1e-9);
-    EXPECT_EQ(stepper.surfaceImpacts().rebounds()[0], 1);
+    EXPECT_EQ(stepper.surfaceImpacts().rebounds()[0], 1u);
     // After the touch the sphere flies the rest of the step with its new velocity: it is back
     // at its touch point's height minus half a step of rebound.
     const double touchX = wall.point.x() - radius;

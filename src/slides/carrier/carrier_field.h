@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace slides {
@@ -68,6 +69,13 @@ public:
         (void)locations;
         sample(points, time, needs, out);
     }
+
+    /// Figures the carrier reports about itself for the run summary (name, value), e.g. the
+    /// lattice scheme's error against cellPoint.
+    virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }
+
+    /// Names of the boundary patches a point can leave through, by index (location −3 − index).
+    virtual std::vector<std::string> boundaryNames() const { return {}; }
 
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }

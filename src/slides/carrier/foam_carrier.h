@@ -8,13 +8,17 @@
 // and the sampled U and ∇U are rotated back about the axis (∇U with its hoop column u_r/r,
 // which a wedge one cell thick cannot resolve). A 2-D mesh (empty patches) is
 // sampled on its mid plane. Points outside the mesh see still gas; sampleFrom marks them with the
-// patch they left through, and the stepper counts them as escaped.
+// patch they left through, and the stepper counts them as escaped. With the lattice scheme the
+// fields are resampled at start-up (carrier/foam_lattice.h) on the mapped 3-D, wedge or 2-D
+// coordinates; points the lattice cannot serve take the exact cellPoint path, and describe()
+// reports the lattice's error against cellPoint at random points of the mesh.
 //
 //     carrier { type foamField; foamFieldCoeffs { time latestTime; interpolation cellPoint; } }
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/foam_interpolation.h"
+#include "slides/carrier/foam_lattice.h"
 
 #include <memory>
 #include <optional>
@@ -24,6 +28,7 @@ namespace slides {
 struct FoamCarrierSettings {
     std::string time = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;
+    double latticeSpacing = 0; ///< lattice scheme: node spacing [m], 0: largest extent / 100
 };
 
 /// A wedge's axis and centre plane: maps 3-D points to the wedge and rotates results back.
@@ -51,8 +56,14 @@ public:
     const FoamMesh& mesh() const { return mesh_; }
     const FoamLocator& locator() const { return *locator_; }
     const std::optional<WedgeFrame>& wedge() const { return wedge_; }
+    /// The lattice scheme's lattice, null for the other schemes.
+    const FoamLattice* lattice() const { return lattice_.get(); }
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
     std::optional<Box> bounds() const override;
+    std::vector<std::string> boundaryNames() const override;
+    /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against
+    /// cellPoint), latticeErrorPoints, latticeExactPathPoints (random points it does not serve).
+    std::vector<std::pair<std::string, double>> figures() const override { return latticeFigures_; }
 
 private:
     void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
@@ -60,6 +71,11 @@ private:
     /// The gradient at wedge point x with the hoop column of an axisymmetric field.
     Mat3 wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity, const Vec3& x) const;
     [[noreturn]] void missing(const std::string& field) const;
+    /// The lattice over the region points map to: the mesh box, or a wedge's or 2-D mesh's
+    /// plane; and its error against cellPoint, for describe().
+    void buildLattice(const std::filesystem::path& caseDirectory);
+    /// The point's values by the exact path (locate, cellPoint), nullopt outside the mesh.
+    std::optional<LatticeNodeValues> cellPointValues(const Vec3& x, int& cell) const;
 
     std::filesystem::path timeDirectory_;
     FoamCarrierSettings settings_;
@@ -69,7 +85,10 @@ private:
     std::optional<Vec3> emptyNormal_; ///< 2-D mesh: sampled on the plane of the cell centres
     std::unique_ptr<InterpolableField<Vec3>> velocity_;
     std::unique_ptr<InterpolableField<double>> k_, epsilon_, temperature_;
-    std::vector<Mat3> cellGradients_; ///< cell scheme only
+    std::vector<Mat3> cellGradients_;      ///< cell scheme only
+    std::unique_ptr<FoamLattice> lattice_; ///< lattice scheme only
+    std::string latticeReport_;
+    std::vector<std::pair<std::string, double>> latticeFigures_;
 };
 
 } // namespace slides

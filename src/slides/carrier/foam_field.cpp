@@ -26,6 +26,10 @@ template <typename T> T element(FoamFile& in);
 template <> double element<double>(FoamFile& in) { return in.scalar(); }
 template <> Vec3 element<Vec3>(FoamFile& in) { return in.vector(); }
 
+template <typename T> T zero();
+template <> double zero<double>() { return 0.0; }
+template <> Vec3 zero<Vec3>() { return Vec3::Zero(); }
+
 /// `uniform v` or `nonuniform List<T> N (...)` of count values, then ';'.
 template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
     const std::string kind = in.word();
@@ -92,7 +96,14 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                 in.expect('{');
                 while (in.peek() != '}') {
                     const std::string entry = in.word();
-                    if (entry == "value" && !patches.empty()) {
+                    if (entry == "type" && in.peek() != '"') {
+                        // noSlip (a wall at rest) writes no value: its value is zero.
+                        const std::string type = in.word();
+                        in.expect(';');
+                        for (const std::size_t p : patches)
+                            if (type == "noSlip" && field.patchValues[p].empty())
+                                field.patchValues[p].assign(mesh.patches[p].size, zero<T>());
+                    } else if (entry == "value" && !patches.empty()) {
                         const auto values = readValues<T>(in, mesh.patches[patches[0]].size);
                         for (const std::size_t p : patches)
                             field.patchValues[p] =

@@ -2,8 +2,9 @@
 //
 // Reference: OpenFOAM v1912 field file format (User Guide 4.2 "Data files"): `internalField
 // uniform v;` or `nonuniform List<T> N (...)`, and per patch of `boundaryField` its `value`
-// entry when the patch type writes one (fixedValue, calculated, inletOutlet, ...); a patch
-// without a value (zeroGradient, empty, wedge, symmetry) has none here.
+// entry when the patch type writes one (fixedValue, calculated, inletOutlet, ...); noSlip
+// (no value written) is zero; other patches without a value (zeroGradient, empty, wedge,
+// symmetry) have none here.
 //
 //     0.5/U[.gz]:  internalField nonuniform List<vector> 1200 ( ... );
 //                  boundaryField { inlet { type fixedValue; value uniform (0 0 10); } }

@@ -8,6 +8,10 @@
 // least-squares linear fit about the point (OpenFOAM's volPointInterpolation averages with
 // inverse-distance weights, which is not exact for a linear field; the fit is, on any mesh: a
 // boundary point whose cells and faces do not fix a linear function adds the next cells).
+// Boundary face values enter the fit beside the cells (volPointInterpolation gives boundary
+// points their faces' values alone): a noSlip wall's zero pulls its points to U ≈ 0 (≤ 4e-4 m/s
+// on the impingingJet plate against 25 m/s at the nozzle); giving the faces precedence by weight
+// makes the fit ill-conditioned at edges of curved patches.
 //
 //     carrier { type foamField; foamFieldCoeffs { interpolation cellPoint; } }
 #pragma once
@@ -21,21 +25,24 @@
 
 namespace slides {
 
-enum class FoamInterpolation { cell, cellPoint };
+enum class FoamInterpolation { cell, cellPoint, lattice };
 
 struct FoamInterpolationName {
     FoamInterpolation value;
     std::string_view name;
 };
 
-/// How to add a scheme: an enumerator, its name here, its case in FoamInterpolator::value().
-inline constexpr std::array<FoamInterpolationName, 2> foamInterpolationNames() {
-    return {{{FoamInterpolation::cell, "cell"}, {FoamInterpolation::cellPoint, "cellPoint"}}};
+/// How to add a scheme: an enumerator, its name here, its case in FoamCarrier::sampleAt().
+/// lattice: cellPoint resampled onto a structured lattice (carrier/foam_lattice.h).
+inline constexpr std::array<FoamInterpolationName, 3> foamInterpolationNames() {
+    return {{{FoamInterpolation::cell, "cell"},
+             {FoamInterpolation::cellPoint, "cellPoint"},
+             {FoamInterpolation::lattice, "lattice"}}};
 }
 
 /// Point weights of one mesh: point value p = Σ weight·sample, where a sample is a cell value
 /// or a boundary face value (patches of type patch and wall; a patch without a value in the
-/// field file contributes its owner cell's value, as zeroGradient).
+/// field file contributes its owner cell's value, as zeroGradient; noSlip walls are zero).
 class PointWeights {
 public:
     explicit PointWeights(const FoamMesh& mesh);

@@ -52,7 +52,8 @@ std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
                                                     carrier.coreLength}));
     case CarrierType::foamField: {
         auto field = std::make_unique<FoamCarrier>(
-            scene.caseDirectory, FoamCarrierSettings{carrier.foamTime, carrier.interpolation});
+            scene.caseDirectory,
+            FoamCarrierSettings{carrier.foamTime, carrier.interpolation, carrier.latticeSpacing});
         requireNozzleInMesh(scene, *field);
         return field;
     }

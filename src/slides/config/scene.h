@@ -50,6 +50,7 @@ struct CarrierSettings {
     // foamField only:
     std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;
+    double latticeSpacing = 0; ///< interpolation lattice: node spacing [m], 0: extent/100
 };
 
 enum class RadiusDistributionKind { fixed, normal, logNormal };

@@ -68,7 +68,10 @@ std::vector<KeyDeclaration> declareKeys() {
          "Time directory: latestTime or a time value (the command line's --time overrides it)."},
         {"carrier.foamFieldCoeffs.interpolation", K::word, "-", "cellPoint",
          namesOf(foamInterpolationNames()), R::any,
-         "cell: the cell's value; cellPoint: point values, linear within the cell's tetrahedra."},
+         "cell: the cell's value; cellPoint: point values, linear within the cell's tetrahedra; "
+         "lattice: cellPoint resampled once onto a lattice, then trilinear (fast)."},
+        {"carrier.foamFieldCoeffs.latticeSpacing", K::scalar, "m", "0", {}, R::nonNegative,
+         "Node spacing of the lattice scheme; 0: 1/100 of the mesh's largest extent."},
         {"carrier.turbulence", K::dictionary, "-", "-", {}, R::any,
          "Turbulence of the analytic jets, k = 3/2 (I U)², ε = 0.09^(3/4) k^(3/2)/ℓ "
          "(carrier/jet_scalars.h); without it they are laminar (k = ε = 0)."},

@@ -377,6 +377,7 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
         carrier.foamTime = keys.wordOrNumber(coeffs + ".time");
         carrier.interpolation =
             *valueNamed(foamInterpolationNames(), keys.word(coeffs + ".interpolation"));
+        carrier.latticeSpacing = keys.scalar(coeffs + ".latticeSpacing");
         return carrier;
     }
     carrier.type = type == "analyticJet" ? CarrierType::analyticJet : CarrierType::roundLaminarJet;

@@ -4,6 +4,7 @@
 #include "slides/surfaces/plane_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -39,8 +40,8 @@ bool Stepper::finished() const {
 }
 
 StepperCounters Stepper::counters() const {
-    return {time_,          steps_,       injector_.injected(), escaped_,
-            particleSteps_, collisions(), surfaces_.rebounds()};
+    return {time_,          steps_,          injector_.injected(), escaped_,
+            particleSteps_, escapedThrough_, collisions(),         surfaces_.rebounds()};
 }
 
 void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
@@ -48,6 +49,7 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
     time_ = counters.time;
     steps_ = counters.steps;
     escaped_ = counters.escaped;
+    escapedThrough_ = counters.escapedThrough;
     particleSteps_ = counters.particleSteps;
     injector_.resumeAfter(counters.injected);
     if (collisions_) collisions_->resume(counters.collisions);
@@ -61,6 +63,17 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
         if (scene_.surfaces[static_cast<std::size_t>(arrival.surface)].interaction ==
             SurfaceInteraction::deposit)
             surfaces_.addToDeposit(arrival);
+}
+
+std::size_t Stepper::exitOf(std::size_t i) const {
+    if (cloud_.carrierLocation.empty()) return 0;
+    std::array<std::int32_t, 1> location{cloud_.carrierLocation[i]};
+    if (location[0] >= -1) { // left the box in this step (the mesh's, by default): and the mesh?
+        CarrierSample scratch;
+        carrier_.sampleFrom(std::array<Vec3, 1>{cloud_.position[i]}, location, time_, {}, scratch);
+    }
+    // Location −3 − p: outside the mesh, through patch p.
+    return location[0] <= -3 ? static_cast<std::size_t>(-2 - location[0]) : 0;
 }
 
 void Stepper::step() {
@@ -175,6 +188,9 @@ void Stepper::meetSurfaces(double h) {
             continue; // a location below −1 left the mesh at the step's start
         } else {
             ++escaped_;
+            const std::size_t exit = exitOf(i);
+            if (escapedThrough_.size() <= exit) escapedThrough_.resize(exit + 1, 0);
+            ++escapedThrough_[exit];
         }
         cloud_.removeAt(i); // swaps in the last particle, already handled
     }

@@ -50,8 +50,10 @@ struct StepperCounters {
     long injected = 0;
     long escaped = 0;
     std::uint64_t particleSteps = 0;
-    long collisions = 0;        ///< particle–particle contacts
-    std::vector<long> rebounds; ///< per surface
+    /// Escapes by exit: [0] the domain box (or a patch not known), [1 + p] carrier patch p.
+    std::vector<std::uint64_t> escapedThrough;
+    long collisions = 0;                 ///< particle–particle contacts
+    std::vector<std::uint64_t> rebounds; ///< per surface
 };
 
 class Stepper {
@@ -71,6 +73,8 @@ public:
     std::uint64_t particleSteps() const { return particleSteps_; }
     long injected() const { return injector_.injected(); }
     long escaped() const { return escaped_; }
+    /// Escapes by exit, as StepperCounters::escapedThrough.
+    const std::vector<std::uint64_t>& escapedThrough() const { return escapedThrough_; }
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
     const SurfaceImpacts& surfaceImpacts() const { return surfaces_; }
@@ -86,6 +90,8 @@ public:
 private:
     void advance(double h);
     void meetSurfaces(double h);
+    /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
+    std::size_t exitOf(std::size_t i) const;
     /// The carrier at points, from and updating their locations when the carrier keeps them.
     void sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
                        double time, CarrierNeeds needs, CarrierSample& out) const;
@@ -103,6 +109,7 @@ private:
     double time_ = 0;
     long steps_ = 0;
     long escaped_ = 0;
+    std::vector<std::uint64_t> escapedThrough_;
     std::uint64_t particleSteps_ = 0;
     std::optional<MaxeyRileyStepper> maxeyRiley_;  ///< when an unsteady term is on
     std::optional<ParticleCollisions> collisions_; ///< when collisions.model is not none

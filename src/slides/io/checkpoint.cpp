@@ -125,9 +125,9 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     file.writeAttribute(g, "escaped", std::int64_t{counters.escaped});
     file.writeAttribute(g, "particleSteps", static_cast<std::int64_t>(counters.particleSteps));
     file.writeAttribute(g, "collisions", std::int64_t{counters.collisions});
-    const std::vector<std::uint64_t> rebounds(counters.rebounds.begin(), counters.rebounds.end());
-    file.writeDataset(g, "rebounds", rebounds, "1");
+    writeColumn(file, g, "rebounds", counters.rebounds);
     file.writeAttribute(g, "nextFrameTime", nextFrameTime);
+    writeColumn(file, g, "escapedThrough", counters.escapedThrough);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
     ParticleCloud::forEachArray(stepper.cloud(), [&](const char* name, const auto& array) {
@@ -188,9 +188,9 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
     state.counters.escaped = file.readInt64(g, "escaped");
     state.counters.particleSteps = static_cast<std::uint64_t>(file.readInt64(g, "particleSteps"));
     state.counters.collisions = file.readInt64(g, "collisions");
-    for (const std::uint64_t count : file.readUInt64(g + "/rebounds"))
-        state.counters.rebounds.push_back(static_cast<long>(count));
+    state.counters.rebounds = file.readUInt64(g + "/rebounds");
     state.nextFrameTime = file.readDouble(g, "nextFrameTime");
+    state.counters.escapedThrough = file.readUInt64(g + "/escapedThrough");
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
     ParticleCloud::forEachArray(state.cloud, [&](const char* name, auto& array) {

@@ -163,11 +163,22 @@ nlohmann::json sceneSettings(const Scene& scene) {
     return settings;
 }
 
+nlohmann::json escapedThrough(const Stepper& stepper, const std::vector<std::string>& patches) {
+    nlohmann::json counts = nlohmann::json::object();
+    const auto& exits = stepper.escapedThrough();
+    for (std::size_t exit = 0; exit < exits.size(); ++exit)
+        if (exits[exit] > 0)
+            counts[exit == 0 || exit > patches.size() ? "domain" : patches[exit - 1]] = exits[exit];
+    return counts;
+}
+
 nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics) {
     nlohmann::json summary;
     summary["slidesTrack"] = SLIDES_VERSION;
     summary["case"] = scene.caseDirectory.string();
     summary["carrier"] = metrics.carrier;
+    for (const auto& [name, value] : metrics.carrierFigures)
+        summary["carrierFigures"][name] = value;
 
     nlohmann::json arrived = nlohmann::json::object();
     nlohmann::json arrivals = nlohmann::json::object();
@@ -179,6 +190,7 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
                             {"injected", stepper.injected()},
                             {"arrived", arrived},
                             {"escaped", stepper.escaped()},
+                            {"escapedThrough", escapedThrough(stepper, metrics.boundaryNames)},
                             {"active", stepper.cloud().size()}};
     summary["arrivals"] = arrivals;
     if (stepper.collisions() > 0 || scene.collisions.model != CollisionModel::none)
@@ -186,7 +198,7 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene.surfaces[s];
         if (plane.interaction == SurfaceInteraction::absorb) continue;
-        const long rebounds = stepper.surfaceImpacts().rebounds()[s];
+        const std::uint64_t rebounds = stepper.surfaceImpacts().rebounds()[s];
         summary["rebounds"][plane.name] = rebounds;
         if (plane.interaction != SurfaceInteraction::deposit) continue;
         const DepositMetrics deposit =

@@ -15,8 +15,13 @@ struct RunMetrics {
     double wallSeconds = 0;     ///< the whole run, output included
     double steppingSeconds = 0; ///< inside Stepper::step() only
     int threads = 1;
-    std::string carrier; ///< CarrierField::describe()
+    std::string carrier;                                        ///< CarrierField::describe()
+    std::vector<std::string> boundaryNames;                     ///< CarrierField::boundaryNames()
+    std::vector<std::pair<std::string, double>> carrierFigures; ///< CarrierField::figures()
 };
+
+/// Escapes by exit name: the carrier's patches by name, the domain box as "domain".
+nlohmann::json escapedThrough(const Stepper& stepper, const std::vector<std::string>& patches);
 
 /// The summary of a finished (or stopped) run.
 nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics);

@@ -24,6 +24,7 @@
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -50,9 +51,9 @@ public:
 
     const Deposit& deposit() const { return deposit_; }
     /// Rebounds off each surface (and its deposit) so far.
-    const std::vector<long>& rebounds() const { return rebounds_; }
+    const std::vector<std::uint64_t>& rebounds() const { return rebounds_; }
     /// Continues the counts of a checkpointed run (one per surface).
-    void resumeRebounds(std::vector<long> rebounds) {
+    void resumeRebounds(std::vector<std::uint64_t> rebounds) {
         if (rebounds.size() != rebounds_.size())
             throw std::logic_error("checkpoint's rebound counts do not fit the scene's surfaces");
         rebounds_ = std::move(rebounds);
@@ -74,7 +75,7 @@ private:
 
     const Scene& scene_;
     Deposit deposit_;
-    std::vector<long> rebounds_;
+    std::vector<std::uint64_t> rebounds_;
 };
 
 } // namespace slides
