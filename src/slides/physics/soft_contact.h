@@ -72,7 +72,7 @@ double liggghtsDampingRatio(double restitution);
 double restitutionOfDampingRatio(double dampingRatio);
 
 /// The law whose Hertz impacts restitute exactly e (0 < e ≤ 1): β solved from
-/// restitutionOfDampingRatio by bisection (≈ 10 ms, once per material pair).
+/// restitutionOfDampingRatio by bisection (≈ 50 ms, once per material pair).
 SoftContactLaw softContactLaw(double restitution, double friction);
 
 /// Normal force [N] on overlap δ > 0 closing at dδ/dt (Eq. 2.4 with the damping of Eq. 2.6–2.8:
