@@ -126,6 +126,9 @@ TEST(SoftContactLaw, DampingRatioOfRestitution) {
         EXPECT_NEAR(restitutionOfDampingRatio(beta), e, 1e-9) << e;
         EXPECT_LT(beta, liggghtsDampingRatio(e)) << e;
     }
+    EXPECT_THROW(softContactLaw(0.0, 0), std::logic_error);
+    EXPECT_THROW(softContactLaw(1.1, 0), std::logic_error);
+    EXPECT_THROW(softContactLaw(NAN, 0), std::logic_error);
     // Never attractive: a fast separation at a small overlap gives zero, not a pull.
     const ContactPair pair = sphereWallPair(glass.elastic(), 0.01, 0.01, rigidMaterial());
     EXPECT_EQ(hertzNormalForce(pair, softContactLaw(0.2, 0), 1e-9, -10.0), 0.0);

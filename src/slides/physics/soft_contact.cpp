@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace slides {
 
@@ -74,7 +76,11 @@ double restitutionOfDampingRatio(double dampingRatio) {
 }
 
 SoftContactLaw softContactLaw(double restitution, double friction) {
-    if (restitution >= 1.0) return {0.0, friction};
+    // The scene reader checks the range; reaching here outside it is a broken invariant.
+    if (!(restitution > 0.0 && restitution <= 1.0))
+        throw std::logic_error("softContactLaw: restitution " + std::to_string(restitution) +
+                               " outside (0, 1]");
+    if (restitution == 1.0) return {0.0, friction};
     // e(β) falls monotonically as β goes negative: bracket, then bisect.
     double elastic = 0.0, damped = 2.0 * liggghtsDampingRatio(restitution);
     while (restitutionOfDampingRatio(damped) > restitution) damped *= 2.0;
