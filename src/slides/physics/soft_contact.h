@@ -11,6 +11,8 @@
 //   S_n = 2E*√(R*δ), k_n = 4/3 E*√(R*δ), S_t = 8G*√(R*δ), k_t = S_t,
 //   γ_n = −2√(5/6) β √(S_n m*), γ_t = −2√(5/6) β √(S_t m*), β = ln e / √(ln²e + π²),
 //   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
+// Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
+// the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
 // A wall is a body of infinite radius and mass (and, if rigid, infinite moduli).
 //
 //     particles { material { bulkModulus 1.6e11; shearModulus 8.0e10; } }   // E, ν from K, G
