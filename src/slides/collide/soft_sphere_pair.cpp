@@ -1,0 +1,56 @@
+#include "slides/collide/soft_sphere_pair.h"
+
+namespace slides {
+
+namespace {
+
+/// Load of a contact of overlap δ > 0 with unit normal n (from the second body to the first),
+/// the contact point at lever arms l_a, l_b from the two centres, moving with each body.
+ContactLoad contactLoad(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                        const Vec3& normal, double leverA, double leverB, const ContactSphere& a,
+                        const Vec3& velocityB, const Vec3& spinB, TangentialSpring& spring,
+                        double dt) {
+    const Vec3 contactVelocityA = a.velocity - leverA * a.spin.cross(normal);
+    const Vec3 contactVelocityB = velocityB + leverB * spinB.cross(normal);
+    const Vec3 slip = contactVelocityA - contactVelocityB;
+    const double normalForce = hertzNormalForce(pair, law, overlap, -slip.dot(normal));
+    const Vec3 tangentialForce =
+        mindlinTangentialForce(spring, pair, law, overlap, normal, slip, normalForce, dt);
+    const Vec3 nCrossFt = normal.cross(tangentialForce);
+    return {overlap, normalForce * normal + tangentialForce, -leverA * nCrossFt,
+            -leverB * nCrossFt};
+}
+
+} // namespace
+
+ContactLoad sphereSphereLoad(const ContactPair& pair, const SoftContactLaw& law,
+                             const ContactSphere& a, const ContactSphere& b,
+                             TangentialSpring& spring, double dt) {
+    const Vec3 separation = a.position - b.position;
+    const double distance = separation.norm();
+    const double overlap = a.radius + b.radius - distance;
+    if (overlap <= 0) {
+        spring = {};
+        return {overlap};
+    }
+    // The plane of the overlap lens: lever arms that add up to the centre distance.
+    const double leverA =
+        (distance * distance + a.radius * a.radius - b.radius * b.radius) / (2.0 * distance);
+    return contactLoad(pair, law, overlap, separation / distance, leverA, distance - leverA, a,
+                       b.velocity, b.spin, spring, dt);
+}
+
+ContactLoad sphereWallLoad(const ContactPair& pair, const SoftContactLaw& law,
+                           const ContactSphere& sphere, const Vec3& wallPoint,
+                           const Vec3& wallNormal, TangentialSpring& spring, double dt) {
+    const double distance = (sphere.position - wallPoint).dot(wallNormal);
+    const double overlap = sphere.radius - distance;
+    if (overlap <= 0) {
+        spring = {};
+        return {overlap};
+    }
+    return contactLoad(pair, law, overlap, wallNormal, distance, 0.0, sphere, Vec3::Zero(),
+                       Vec3::Zero(), spring, dt);
+}
+
+} // namespace slides

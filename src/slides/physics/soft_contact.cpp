@@ -1,0 +1,148 @@
+#include "slides/physics/soft_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace slides {
+
+namespace {
+
+/// Tsuji's damping factor −2√(5/6) β shared by the normal and the tangential damping.
+double dampingFactor(const SoftContactLaw& law) {
+    return -2.0 * std::sqrt(5.0 / 6.0) * law.dampingRatio;
+}
+
+/// Hertz contact radius √(R*δ) [m]: the stiffnesses are proportional to it.
+double contactRadius(const ContactPair& pair, double overlap) {
+    return std::sqrt(pair.radius * overlap);
+}
+
+// 1/E* and 1/G* contributions of one body: (1−ν²)/E and (2−ν)/G, 0 for a rigid body.
+double normalCompliance(const ElasticMaterial& material) {
+    return (1.0 - material.poissonRatio * material.poissonRatio) / material.youngsModulus;
+}
+double shearCompliance(const ElasticMaterial& material) {
+    return (2.0 - material.poissonRatio) / shearModulus(material);
+}
+
+} // namespace
+
+ElasticMaterial elasticMaterial(double bulkModulus, double shearModulus) {
+    const double k = bulkModulus, g = shearModulus;
+    return {9.0 * k * g / (3.0 * k + g), (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g))};
+}
+
+ContactPair sphereSpherePair(const ElasticMaterial& a, double radiusA, double massA,
+                             const ElasticMaterial& b, double radiusB, double massB) {
+    return {radiusA * radiusB / (radiusA + radiusB), massA * massB / (massA + massB),
+            1.0 / (normalCompliance(a) + normalCompliance(b)),
+            1.0 / (shearCompliance(a) + shearCompliance(b))};
+}
+
+ContactPair sphereWallPair(const ElasticMaterial& sphere, double radius, double mass,
+                           const ElasticMaterial& wall) {
+    return {radius, mass, 1.0 / (normalCompliance(sphere) + normalCompliance(wall)),
+            1.0 / (shearCompliance(sphere) + shearCompliance(wall))};
+}
+
+double liggghtsDampingRatio(double restitution) {
+    const double logE = std::log(restitution);
+    return logE / std::sqrt(logE * logE + std::numbers::pi * std::numbers::pi);
+}
+
+double restitutionOfDampingRatio(double dampingRatio) {
+    // δ in units of δ0, t of t0 with m* δ0/t0² = 4/3 E*√R* δ0^{3/2} and δ0/t0 = v: the damping
+    // −2√(5/6) β √(S_n m*) dδ/dt becomes κ x^{1/4} x' with κ = −2√(5/6)·√(3/2) β = −√5 β.
+    const double kappa = -std::sqrt(5.0) * dampingRatio;
+    const auto acceleration = [kappa](double x, double v) {
+        return x <= 0 ? 0.0 : -std::max(0.0, std::pow(x, 1.5) + kappa * std::pow(x, 0.25) * v);
+    };
+    const double h = 5e-4; // the elastic impact lasts 3.2: RK4 error < 1e-5 in e
+    double x = 0, v = 1;
+    for (long step = 0; step < 100'000'000; ++step) {
+        const double a1 = acceleration(x, v);
+        const double a2 = acceleration(x + 0.5 * h * v, v + 0.5 * h * a1);
+        const double a3 = acceleration(x + 0.5 * h * (v + 0.5 * h * a1), v + 0.5 * h * a2);
+        const double a4 = acceleration(x + h * (v + 0.5 * h * a2), v + h * a3);
+        x += h / 6 * (v + 2 * (v + 0.5 * h * a1) + 2 * (v + 0.5 * h * a2) + (v + h * a3));
+        v += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
+        // Once the clamped force is zero the bodies fly apart at constant speed.
+        if (x <= 0) return -v;
+    }
+    return 0.0; // overdamped: it never leaves (not reached for β > −10)
+}
+
+SoftContactLaw softContactLaw(double restitution, double friction) {
+    // The scene reader checks the range; reaching here outside it is a broken invariant.
+    if (!(restitution > 0.0 && restitution <= 1.0))
+        throw std::logic_error("softContactLaw: restitution " + std::to_string(restitution) +
+                               " outside (0, 1]");
+    if (restitution == 1.0) return {0.0, friction};
+    // e(β) falls monotonically as β goes negative: bracket, then bisect.
+    double elastic = 0.0, damped = 2.0 * liggghtsDampingRatio(restitution);
+    while (restitutionOfDampingRatio(damped) > restitution) damped *= 2.0;
+    for (int iteration = 0; iteration < 60 && elastic - damped > 1e-12; ++iteration) {
+        const double middle = 0.5 * (elastic + damped);
+        (restitutionOfDampingRatio(middle) > restitution ? elastic : damped) = middle;
+    }
+    return {0.5 * (elastic + damped), friction};
+}
+
+double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                        double closingSpeed) {
+    const double a = contactRadius(pair, overlap);
+    const double stiffness = 4.0 / 3.0 * pair.youngsModulus * a;                        // k_n
+    const double normalStiffness = 2.0 * pair.youngsModulus * a;                        // S_n
+    const double damping = dampingFactor(law) * std::sqrt(normalStiffness * pair.mass); // γ_n
+    return std::max(0.0, stiffness * overlap + damping * closingSpeed);
+}
+
+double hertzElasticEnergy(const ContactPair& pair, double overlap) {
+    return 8.0 / 15.0 * pair.youngsModulus * std::sqrt(pair.radius) * std::pow(overlap, 2.5);
+}
+
+Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
+                            const SoftContactLaw& law, double overlap, const Vec3& normal,
+                            const Vec3& slipVelocity, double normalForce, double dt) {
+    // Rotate the stored displacement into the current tangent plane, keeping its length.
+    Vec3& xi = spring.displacement;
+    const double length = xi.norm();
+    xi -= xi.dot(normal) * normal;
+    const double projected = xi.norm();
+    if (projected > 0) xi *= length / projected;
+
+    const Vec3 tangentialSlip = slipVelocity - slipVelocity.dot(normal) * normal;
+    xi += tangentialSlip * dt;
+
+    const double stiffness = 8.0 * pair.shearModulus * contactRadius(pair, overlap); // S_t = k_t
+    const double damping = dampingFactor(law) * std::sqrt(stiffness * pair.mass);    // γ_t
+    Vec3 force = -stiffness * xi - damping * tangentialSlip;
+
+    // Coulomb limit (Eq. 2.14): scale the force down to μF_n and shorten the spring so that it
+    // gives exactly that force at this slip velocity (the stick force resumes from there).
+    const double limit = law.friction * normalForce;
+    const double magnitude = force.norm();
+    if (magnitude > limit) {
+        const double scale = magnitude > 0 ? limit / magnitude : 0.0;
+        force *= scale;
+        xi = -(force + damping * tangentialSlip) / stiffness;
+    }
+    return force;
+}
+
+double hertzMaxOverlap(const ContactPair& pair, double impactSpeed) {
+    return std::pow(15.0 * pair.mass * impactSpeed * impactSpeed /
+                        (16.0 * pair.youngsModulus * std::sqrt(pair.radius)),
+                    0.4);
+}
+
+double hertzContactDuration(const ContactPair& pair, double impactSpeed) {
+    // ∫₀¹ dx/√(1 − x^{5/2}) = (2/5) B(2/5, 1/2) = 1.47164...
+    const double halfDurationFactor = 0.4 * std::tgamma(0.4) * std::tgamma(0.5) / std::tgamma(0.9);
+    return 2.0 * halfDurationFactor * hertzMaxOverlap(pair, impactSpeed) / impactSpeed;
+}
+
+} // namespace slides

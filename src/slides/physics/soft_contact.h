@@ -1,0 +1,116 @@
+// Soft-sphere contact: Hertz normal force with restitution damping, Mindlin tangential spring
+// with history and Coulomb limit, and the Hertz contact duration that sets the time step.
+//
+// Reference: Section 2.2 of the reference: Eq. 2.4 (Hertz 1882: F = 4/3 E*√R* δ^{3/2},
+// 1/R* = 1/R1 + 1/R2, 1/E* = (1−ν1²)/E1 + (1−ν2²)/E2), Eq. 2.5 (Mindlin 1949 tangential
+// stiffness, 1/G* = (2−ν1)/G1 + (2−ν2)/G2), Eq. 2.6–2.8 (a damping term added to the elastic
+// force, its constant fixed by the restitution coefficient e), Eq. 2.14 (Cundall & Strack 1979:
+// tangential spring on the accumulated displacement, truncated at μ|F_n|); Eq. 2.59 (Hertz
+// maximum overlap and contact duration). The forms are those of LIGGGHTS' `hertz` +
+// `tangential history` model (Tsuji, Tanaka & Ishida 1992, Powder Technol. 71:239):
+//   S_n = 2E*√(R*δ), k_n = 4/3 E*√(R*δ), S_t = 8G*√(R*δ), k_t = S_t,
+//   γ_n = −2√(5/6) β √(S_n m*), γ_t = −2√(5/6) β √(S_t m*), β = ln e / √(ln²e + π²),
+//   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
+// Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
+// the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
+// A wall is a body of infinite radius and mass (and, if rigid, infinite moduli).
+//
+//     particles { material { bulkModulus 1.6e11; shearModulus 8.0e10; } }   // E, ν from K, G
+#pragma once
+
+#include "slides/core/vector.h"
+
+#include <limits>
+
+namespace slides {
+
+/// Young's modulus and Poisson ratio of one material.
+struct ElasticMaterial {
+    double youngsModulus = 0; ///< E [Pa]; +∞ for a rigid wall
+    double poissonRatio = 0;  ///< ν
+};
+
+/// E = 9KG/(3K+G), ν = (3K−2G)/(2(3K+G)) from bulk modulus K and shear modulus G.
+ElasticMaterial elasticMaterial(double bulkModulus, double shearModulus);
+
+/// G = E / (2(1+ν)) [Pa].
+inline double shearModulus(const ElasticMaterial& material) {
+    return material.youngsModulus / (2.0 * (1.0 + material.poissonRatio));
+}
+
+/// A rigid wall: infinite moduli, so only the sphere deforms.
+inline ElasticMaterial rigidMaterial() { return {std::numeric_limits<double>::infinity(), 0.0}; }
+
+/// The effective quantities of a contacting pair (Eq. 2.4, 2.5, 2.7).
+struct ContactPair {
+    double radius = 0;        ///< R* = R1R2/(R1+R2) [m]
+    double mass = 0;          ///< m* = m1m2/(m1+m2) [kg]
+    double youngsModulus = 0; ///< E* [Pa]
+    double shearModulus = 0;  ///< G* [Pa]
+};
+
+/// Two spheres of radii R, masses m and materials a, b.
+ContactPair sphereSpherePair(const ElasticMaterial& a, double radiusA, double massA,
+                             const ElasticMaterial& b, double radiusB, double massB);
+
+/// A sphere against a wall (infinite radius and mass).
+ContactPair sphereWallPair(const ElasticMaterial& sphere, double radius, double mass,
+                           const ElasticMaterial& wall);
+
+/// The damping ratio β and Coulomb friction μ of a contact.
+struct SoftContactLaw {
+    double dampingRatio = 0; ///< β: 0 elastic, negative with damping
+    double friction = 0;     ///< μ
+};
+
+/// LIGGGHTS' (Tsuji's) β = ln e / √(ln²e + π²). Exact for a linear spring-dashpot that may pull;
+/// with Hertz stiffness and the no-pull clamp the impact restitutes more: e = 0.9 gives 0.9020,
+/// e = 0.5 gives 0.5503, e = 0.2 gives 0.3249 (restitutionOfDampingRatio).
+double liggghtsDampingRatio(double restitution);
+
+/// Restitution coefficient of a damped Hertz impact with damping ratio β (independent of the
+/// impact speed, radius, mass and moduli): the dimensionless impact x'' = −max(0, x^{3/2} +
+/// κ x^{1/4} x'), κ = −√5 β, x(0) = 0, x'(0) = 1, integrated by RK4 (error < 1e-5) to x = 0.
+double restitutionOfDampingRatio(double dampingRatio);
+
+/// The law whose Hertz impacts restitute exactly e (0 < e ≤ 1): β solved from
+/// restitutionOfDampingRatio by bisection (≈ 50 ms, once per material pair).
+SoftContactLaw softContactLaw(double restitution, double friction);
+
+/// Normal force [N] on overlap δ > 0 closing at dδ/dt (Eq. 2.4 with the damping of Eq. 2.6–2.8:
+/// k_n δ + γ_n dδ/dt), clamped at 0 so that the damping never pulls the bodies together.
+double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                        double closingSpeed);
+
+/// Elastic energy 8/15 E*√R* δ^{5/2} [J] stored in a Hertz contact (the integral of Eq. 2.4).
+double hertzElasticEnergy(const ContactPair& pair, double overlap);
+
+/// The Mindlin/Cundall–Strack spring of one contact: its accumulated tangential displacement ξ.
+/// Lives as long as the contact; a new contact starts from zero.
+struct TangentialSpring {
+    Vec3 displacement = Vec3::Zero(); ///< ξ [m], in the tangent plane
+};
+
+/// Tangential force [N] on the first body (Eq. 2.5, 2.14): the spring is rotated into the
+/// tangent plane of the current normal n (keeping its length), stretched by v_t dt, and the force
+/// −k_t ξ − γ_t v_t truncated at μ F_n, the spring shortened to match (Cundall & Strack).
+/// slipVelocity is the first body's contact-point velocity relative to the second's.
+Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
+                            const SoftContactLaw& law, double overlap, const Vec3& normal,
+                            const Vec3& slipVelocity, double normalForce, double dt);
+
+/// Largest overlap of an elastic Hertz impact at normal speed v: (15 m* v² / (16 E*√R*))^{2/5}
+/// (Eq. 2.59).
+double hertzMaxOverlap(const ContactPair& pair, double impactSpeed);
+
+/// Duration of an elastic Hertz impact [s]: 2 δ_max/v ∫₀¹ dx/√(1 − x^{5/2}) = 2.9432 δ_max/v,
+/// i.e. 2.87 (m*²/(R* E*² v))^{1/5} of Eq. 2.59.
+double hertzContactDuration(const ContactPair& pair, double impactSpeed);
+
+/// Time step resolving a Hertz impact at speed v with the given number of steps per contact.
+inline double softContactStep(const ContactPair& pair, double impactSpeed,
+                              double stepsPerContact = 50) {
+    return hertzContactDuration(pair, impactSpeed) / stepsPerContact;
+}
+
+} // namespace slides
