@@ -173,7 +173,7 @@ TEST(VelocityDependentRestitution, ElasticBelowYieldAndJohnsonScalingAbove) {
     MaterialSettings target{160e9, 80e9, 0, 1.1};
     const double radius = 80e-6, mass = sphereMass(radius, 5680);
     const ContactPair pair = contactPair({mass, radius, &particle}, {INFINITY, INFINITY, &target});
-    EXPECT_NEAR(pair.modulus / 111.0048e9, 1.0, 1e-5);
+    EXPECT_NEAR(pair.youngsModulus / 111.0048e9, 1.0, 1e-5);
     EXPECT_DOUBLE_EQ(pair.mass, mass);
     EXPECT_DOUBLE_EQ(pair.radius, radius);
     const RestitutionSettings settings{RestitutionModel::velocityDependent, 0, 3};

@@ -68,8 +68,8 @@ ImpactScene pairScene(const BenchmarkMaterial& a, double radiusA, double velocit
     ImpactScene scene;
     scene.first = body(a, radiusA, {-radiusA - gap, 0, 0}, {velocityA, 0, 0});
     scene.second = body(b, radiusB, {radiusB, 0, 0}, {velocityB, 0, 0});
-    scene.pair = sphereSpherePair(a.elastic(), radiusA, scene.first.mass, b.elastic(), radiusB,
-                                  scene.second->mass);
+    scene.pair = elasticPair(a.elastic(), radiusA, scene.first.mass, b.elastic(), radiusB,
+                             scene.second->mass);
     scene.law = law;
     return scene;
 }
@@ -88,8 +88,7 @@ ImpactScene wallScene(const BenchmarkMaterial& material, double radius, const Ve
 
 TEST(SoftContactPair, EffectivePropertiesOfPairAndWall) {
     // E* of two glass spheres: E/(2(1 − ν²)); G* = G/(2(2 − ν)), G = E/(2(1 + ν)).
-    const ContactPair pair =
-        sphereSpherePair(glass.elastic(), 0.01, 2.0, glass.elastic(), 0.03, 6.0);
+    const ContactPair pair = elasticPair(glass.elastic(), 0.01, 2.0, glass.elastic(), 0.03, 6.0);
     EXPECT_NEAR(pair.radius, 0.0075, 1e-16);
     EXPECT_NEAR(pair.mass, 1.5, 1e-15);
     EXPECT_NEAR(pair.youngsModulus / (4.8e10 / (2 * (1 - 0.04))), 1.0, 1e-15);
@@ -104,10 +103,10 @@ TEST(SoftContactPair, EffectivePropertiesOfPairAndWall) {
 
 TEST(SoftContactPair, YoungsModulusAndPoissonRatioFromBulkAndShearModuli) {
     // Steel-like K = 160 GPa, G = 80 GPa: E = 9KG/(3K+G) = 205.714 GPa, ν = 0.285714.
-    const ElasticMaterial steel = elasticMaterial(160e9, 80e9);
+    const ElasticMaterial steel = MaterialSettings{160e9, 80e9}.elasticMaterial();
     EXPECT_NEAR(steel.youngsModulus, 9 * 160e9 * 80e9 / 560e9, 1e-3);
     EXPECT_NEAR(steel.poissonRatio, 2.0 / 7.0, 1e-15);
-    EXPECT_NEAR(shearModulus(steel), 80e9, 1e-3); // the round trip G = E/(2(1 + ν))
+    EXPECT_NEAR(steel.shearModulus(), 80e9, 1e-3); // the round trip G = E/(2(1 + ν))
 }
 
 TEST(SoftContactLaw, DampingRatioOfRestitution) {

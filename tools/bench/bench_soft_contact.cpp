@@ -46,7 +46,7 @@ void softSphereContacts(benchmark::State& state) {
     const double mass = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * 2500;
     const slides::ContactPair pair =
         state.range(1) ? slides::sphereWallPair(material, radius, mass, material)
-                       : slides::sphereSpherePair(material, radius, mass, material, radius, mass);
+                       : slides::elasticPair(material, radius, mass, material, radius, mass);
     const slides::SoftContactLaw law{slides::liggghtsDampingRatio(0.9), 0.3};
     Contacts contacts = randomContacts(int(state.range(0)));
     const slides::Vec3 wallPoint(0, 0, -1.99 * radius);

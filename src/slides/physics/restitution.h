@@ -6,7 +6,8 @@
 //   v_Y from ½ m v_Y² = 5.1 α⁵ R³ Y⁵ / E*⁴                         (2.63, yield onset, α_Y = α)
 //   e = 1.88 α^{5/8} √(Y/E*) (½ m v² / (Y R³))^{−1/8}  for v > v_Y, else 1   (2.62)
 //   δt₁ = √(π m / (8 R α Y)) for v > v_Y (compression), δt − δt₁ = 1.2 e δt₁  (2.64)
-//   δt = 2.87 (m² / (R E*² v))^{1/5} for an elastic (Hertz) impact, δt₁ = δt/2 (2.59)
+//   δt = 2.94 δ_max / v = 2.87 (m² / (R E*² v))^{1/5} for an elastic (Hertz) impact,
+//   δt₁ = δt/2 (2.59; physics/soft_contact.h)
 // m, R and E* are the pair's effective mass, radius and modulus (physics/contact_pair.h).
 //
 //     collisions { restitution { model velocityDependent; yieldPressureFactor 3; } }
@@ -14,6 +15,7 @@
 #pragma once
 
 #include "slides/physics/contact_pair.h"
+#include "slides/physics/soft_contact.h"
 
 #include <algorithm>
 #include <array>
@@ -45,7 +47,7 @@ struct RestitutionSettings {
 inline double yieldVelocity(const ContactPair& pair, double alpha) {
     const double Y = pair.yieldStress;
     const double energy = 5.1 * std::pow(alpha, 5) * std::pow(pair.radius, 3) * std::pow(Y, 5) /
-                          std::pow(pair.modulus, 4);
+                          std::pow(pair.youngsModulus, 4);
     return std::sqrt(2 * energy / pair.mass);
 }
 
@@ -58,15 +60,8 @@ inline double restitutionCoefficient(const RestitutionSettings& settings, const 
     if (!(Y > 0) || normalSpeed <= yieldVelocity(pair, alpha)) return 1.0;
     const double energyRatio =
         0.5 * pair.mass * normalSpeed * normalSpeed / (Y * std::pow(pair.radius, 3));
-    return std::min(1.0, 1.88 * std::pow(alpha, 0.625) * std::sqrt(Y / pair.modulus) *
+    return std::min(1.0, 1.88 * std::pow(alpha, 0.625) * std::sqrt(Y / pair.youngsModulus) *
                              std::pow(energyRatio, -0.125));
-}
-
-/// Duration of an elastic Hertz impact, δt of Eq. 2.59 [s].
-inline double hertzImpactDuration(const ContactPair& pair, double normalSpeed) {
-    return 2.87 * std::pow(pair.mass * pair.mass /
-                               (pair.radius * pair.modulus * pair.modulus * normalSpeed),
-                           0.2);
 }
 
 /// Compression time δt₁ of an impact (Eq. 2.64 above v_Y; half the Hertz duration, Eq. 2.59,
@@ -76,7 +71,7 @@ inline double compressionTime(const RestitutionSettings& settings, const Contact
     const double alpha = settings.yieldPressureFactor;
     if (pair.yieldStress > 0 && normalSpeed > yieldVelocity(pair, alpha))
         return std::sqrt(M_PI * pair.mass / (8 * pair.radius * alpha * pair.yieldStress));
-    return 0.5 * hertzImpactDuration(pair, normalSpeed);
+    return 0.5 * hertzContactDuration(pair, normalSpeed);
 }
 
 } // namespace slides

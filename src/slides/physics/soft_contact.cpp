@@ -20,33 +20,7 @@ double contactRadius(const ContactPair& pair, double overlap) {
     return std::sqrt(pair.radius * overlap);
 }
 
-// 1/E* and 1/G* contributions of one body: (1−ν²)/E and (2−ν)/G, 0 for a rigid body.
-double normalCompliance(const ElasticMaterial& material) {
-    return (1.0 - material.poissonRatio * material.poissonRatio) / material.youngsModulus;
-}
-double shearCompliance(const ElasticMaterial& material) {
-    return (2.0 - material.poissonRatio) / shearModulus(material);
-}
-
 } // namespace
-
-ElasticMaterial elasticMaterial(double bulkModulus, double shearModulus) {
-    const double k = bulkModulus, g = shearModulus;
-    return {9.0 * k * g / (3.0 * k + g), (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g))};
-}
-
-ContactPair sphereSpherePair(const ElasticMaterial& a, double radiusA, double massA,
-                             const ElasticMaterial& b, double radiusB, double massB) {
-    return {radiusA * radiusB / (radiusA + radiusB), massA * massB / (massA + massB),
-            1.0 / (normalCompliance(a) + normalCompliance(b)),
-            1.0 / (shearCompliance(a) + shearCompliance(b))};
-}
-
-ContactPair sphereWallPair(const ElasticMaterial& sphere, double radius, double mass,
-                           const ElasticMaterial& wall) {
-    return {radius, mass, 1.0 / (normalCompliance(sphere) + normalCompliance(wall)),
-            1.0 / (shearCompliance(sphere) + shearCompliance(wall))};
-}
 
 double liggghtsDampingRatio(double restitution) {
     const double logE = std::log(restitution);

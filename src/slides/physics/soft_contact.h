@@ -13,49 +13,18 @@
 //   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
 // Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
 // the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
-// A wall is a body of infinite radius and mass (and, if rigid, infinite moduli).
+// A wall is a body of infinite radius and mass (and, if rigid, infinite moduli); the pair's
+// effective properties are physics/contact_pair.h's.
 //
 //     particles { material { bulkModulus 1.6e11; shearModulus 8.0e10; } }   // E, ν from K, G
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/physics/contact_pair.h"
 
 #include <limits>
 
 namespace slides {
-
-/// Young's modulus and Poisson ratio of one material.
-struct ElasticMaterial {
-    double youngsModulus = 0; ///< E [Pa]; +∞ for a rigid wall
-    double poissonRatio = 0;  ///< ν
-};
-
-/// E = 9KG/(3K+G), ν = (3K−2G)/(2(3K+G)) from bulk modulus K and shear modulus G.
-ElasticMaterial elasticMaterial(double bulkModulus, double shearModulus);
-
-/// G = E / (2(1+ν)) [Pa].
-inline double shearModulus(const ElasticMaterial& material) {
-    return material.youngsModulus / (2.0 * (1.0 + material.poissonRatio));
-}
-
-/// A rigid wall: infinite moduli, so only the sphere deforms.
-inline ElasticMaterial rigidMaterial() { return {std::numeric_limits<double>::infinity(), 0.0}; }
-
-/// The effective quantities of a contacting pair (Eq. 2.4, 2.5, 2.7).
-struct ContactPair {
-    double radius = 0;        ///< R* = R1R2/(R1+R2) [m]
-    double mass = 0;          ///< m* = m1m2/(m1+m2) [kg]
-    double youngsModulus = 0; ///< E* [Pa]
-    double shearModulus = 0;  ///< G* [Pa]
-};
-
-/// Two spheres of radii R, masses m and materials a, b.
-ContactPair sphereSpherePair(const ElasticMaterial& a, double radiusA, double massA,
-                             const ElasticMaterial& b, double radiusB, double massB);
-
-/// A sphere against a wall (infinite radius and mass).
-ContactPair sphereWallPair(const ElasticMaterial& sphere, double radius, double mass,
-                           const ElasticMaterial& wall);
 
 /// The damping ratio β and Coulomb friction μ of a contact.
 struct SoftContactLaw {
