@@ -76,6 +76,14 @@ def main():
     figure, (left, right) = plt.subplots(1, 2, figsize=(12, 5.2))
     extent = [0, columns * pixel * 1e3, 0, rows * pixel * 1e3]
     shown = left.imshow(height * 1e6, origin="lower", extent=extent, cmap="viridis")
+    # Frame the bulk of the deposit (the middle 96 % of the particles in each direction, with a
+    # margin): a few particles that stuck far out would otherwise shrink it to a dot.
+    u = (centres - origin) @ direction[:, 0] * 1e3
+    v = (centres - origin) @ direction[:, 1] * 1e3
+    for axis, values in ((left.set_xlim, u), (left.set_ylim, v)):
+        low, high = np.percentile(values, [2, 98])
+        margin = 0.5 * (high - low) + 0.5
+        axis(max(0, low - margin), high + margin)
     figure.colorbar(shown, ax=left, label="deposit height [µm]")
     left.set_xlabel("u [mm]")
     left.set_ylabel("v [mm]")

@@ -7,6 +7,7 @@
 #include "slides/surfaces/plane_contact.h"
 
 #include <cmath>
+#include <optional>
 
 namespace slides {
 
@@ -37,18 +38,31 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
         return path.velocity + s * (v - path.velocity);
     };
     const auto centreAt = [&](double s) -> Vec3 { return path.start + s * (x - path.start); };
-    // A path that starts in contact was pushed there within the step (by a collision): the
-    // end velocity is the one that meets the surface.
-    const auto contactVelocityAt = [&](double s) -> Vec3 { return s > 0 ? velocityAt(s) : v; };
+    // The velocity that meets a surface whose outward direction is `away` at fraction s: the
+    // chord's, or, for a path that a collision bent within the step (or that starts in
+    // contact), the end velocity; none when both leave it.
+    const auto meetingVelocity = [&](double s, const Vec3& away) -> std::optional<Vec3> {
+        const Vec3 along = velocityAt(s);
+        if (s > 0 && along.dot(away) < 0) return along;
+        if (v.dot(away) < 0) return Vec3(v);
+        return std::nullopt;
+    };
     // Only a touch while approaching counts: one that starts on a surface and leaves does not.
     int surface = -1;
     double fraction = 2.0;
+    Vec3 contactVelocity = Vec3::Zero();
     for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene_.surfaces[s];
         const auto touch = planeContactFraction(plane, path.start, x, radius);
-        if (touch && *touch < fraction && contactVelocityAt(*touch).dot(plane.normal) < 0) {
+        if (!touch || *touch >= fraction) continue;
+        // A sink takes whatever touches it, as before collisions existed.
+        const auto meeting = plane.interaction == SurfaceInteraction::absorb
+                                 ? std::optional<Vec3>(velocityAt(*touch))
+                                 : meetingVelocity(*touch, plane.normal);
+        if (meeting) {
             fraction = *touch;
             surface = static_cast<int>(s);
+            contactVelocity = *meeting;
         }
     }
     const auto depositTouch = deposit_.firstTouch(path.start, x, radius);
@@ -56,8 +70,9 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (depositTouch && depositTouch->fraction < fraction) {
         const Vec3 away =
             centreAt(depositTouch->fraction) - deposit_.position(depositTouch->particle);
-        if (contactVelocityAt(depositTouch->fraction).dot(away) < 0) {
+        if (const auto meeting = meetingVelocity(depositTouch->fraction, away)) {
             onDeposit = true;
+            contactVelocity = *meeting;
             fraction = depositTouch->fraction;
             surface = deposit_.surface(depositTouch->particle);
         }
@@ -65,7 +80,6 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (surface < 0) return ImpactResult::none;
 
     const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
-    const Vec3 contactVelocity = contactVelocityAt(fraction);
     const Vec3 normal =
         onDeposit ? (centreAt(fraction) - deposit_.position(depositTouch->particle)).normalized()
                   : plane.normal;
