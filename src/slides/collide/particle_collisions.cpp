@@ -14,8 +14,7 @@
 
 namespace slides {
 
-ParticleCollisions::ParticleCollisions(const Scene& scene)
-    : scene_(scene), particleDensity_(scene.particles.density) {}
+ParticleCollisions::ParticleCollisions(const Scene& scene) : scene_(scene) {}
 
 void ParticleCollisions::findContacts(const ParticleCloud& cloud,
                                       const std::vector<Vec3>& startPositions) {
@@ -83,10 +82,9 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
         const Vec3 separation = centreA - centreB;
         if (!(separation.squaredNorm() > 0)) continue; // coincident centres: no normal
         const Vec3 normal = separation.normalized();
-        const auto massOf = [&](double radius) {
-            return 4.0 / 3.0 * M_PI * radius * radius * radius * particleDensity_;
-        };
-        const double massA = massOf(cloud.radius[a]), massB = massOf(cloud.radius[b]);
+        const double density = scene_.particles.density;
+        const double massA = sphereMass(cloud.radius[a], density);
+        const double massB = sphereMass(cloud.radius[b], density);
         ImpactBody bodyA{cloud.velocity[a], cloud.angularVelocity[a], 1 / massA, cloud.radius[a]};
         ImpactBody bodyB{cloud.velocity[b], cloud.angularVelocity[b], 1 / massB, cloud.radius[b]};
         const double approach = -(bodyA.velocity - bodyB.velocity).dot(normal);

@@ -48,7 +48,6 @@ private:
     void findContacts(const ParticleCloud& cloud, const std::vector<Vec3>& startPositions);
 
     const Scene& scene_;
-    double particleDensity_;
     CellGrid grid_;
     std::vector<Vec3> midpoints_; ///< of the step's chords, binned
     std::vector<ParticleContact> contacts_;

@@ -58,6 +58,11 @@ struct ContactPair {
     double workOfAdhesion = 0; ///< W₁₂ = 2√(γ₁γ₂) [J/m²] (Berthelot rule; Eq. 2.74)
 };
 
+/// Mass of a sphere, (4/3)πR³ρ [kg].
+inline double sphereMass(double radius, double density) {
+    return 4.0 / 3.0 * M_PI * radius * radius * radius * density;
+}
+
 /// 1/(1/a + 1/b) with 1/∞ = 0.
 inline double harmonicSum(double a, double b) { return 1.0 / (1.0 / a + 1.0 / b); }
 

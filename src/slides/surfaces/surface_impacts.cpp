@@ -99,7 +99,7 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (plane.interaction == SurfaceInteraction::absorb) return arrive();
 
     const double normalSpeed = -contactVelocity.dot(normal);
-    const double mass = 4.0 / 3.0 * M_PI * radius * radius * radius * scene_.particles.density;
+    const double mass = sphereMass(radius, scene_.particles.density);
     const MaterialSettings& particleMaterial = scene_.particles.material;
     const ContactBody particle{mass, radius, &particleMaterial};
     const ContactPair pair =
