@@ -5,6 +5,7 @@
 //     slides-track foamCases/impingingJet --time 500     # an OpenFOAM case, its time 500
 //     slides-track CASE --checkpoint-every 500     # after a crash: slides-track CASE --restart
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
+#include "slides/analysis/scene_analysis.h"
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_keys.h"
 #include "slides/config/scene_reader.h"
@@ -62,7 +63,8 @@ void applyOverrides(const Options& options, slides::Scene& scene) {
         throw slides::InputError("command line", 0, "--dt", "is longer than the end time");
 }
 
-void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier, int threads) {
+void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier,
+                 const slides::SceneAnalysis& analysis, int threads) {
     const double meanRadius = scene.particles.radius.meanRadius();
     const double responseTime = slides::stokesResponseTime(
         scene.particles.density, meanRadius, scene.fluid.density, scene.fluid.kinematicViscosity);
@@ -72,9 +74,11 @@ void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier
                 "time %.3g s\n",
                 scene.particles.count, meanRadius, scene.particles.density, responseTime);
     const std::string integrator(slides::nameOf(slides::integratorNames(), scene.time.integrator));
-    std::printf("  time       dt %.3g s (%.3g response times), end %.3g s, %s, %d thread%s\n",
-                scene.time.dt, scene.time.dt / responseTime, scene.time.endTime, integrator.c_str(),
-                threads, threads == 1 ? "" : "s");
+    std::fputs(slides::describeAnalysis(analysis).c_str(), stdout);
+    std::printf("  time       dt %.3g s (%s, %.3g response times), end %.3g s, %s, %d thread%s\n",
+                scene.time.dt, analysis.timeStepGiven ? "given" : "from the analysis",
+                scene.time.dt / responseTime, scene.time.endTime, integrator.c_str(), threads,
+                threads == 1 ? "" : "s");
     if (scene.time.integrator == slides::Integrator::explicitEuler &&
         scene.time.dt > 2 * responseTime)
         std::printf("  warning    explicitEuler is unstable for dt > 2 response times; use an "
@@ -89,7 +93,9 @@ int run(const Options& options) {
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     omp_set_num_threads(threads);
-    if (!options.quiet) describeRun(scene, *carrier, threads);
+    const slides::SceneAnalysis analysis = slides::analyseScene(scene, *carrier);
+    slides::applyAnalysis(analysis, scene);
+    if (!options.quiet) describeRun(scene, *carrier, analysis, threads);
 
     const auto outputDirectory = options.output.empty()
                                      ? std::filesystem::path(options.caseDirectory) / "slides"
@@ -139,7 +145,7 @@ int run(const Options& options) {
     const auto summary =
         slides::runSummary(scene, stepper,
                            {wallSeconds, steppingSeconds, threads, carrier->describe(),
-                            carrier->boundaryNames(), carrier->figures()});
+                            carrier->boundaryNames(), carrier->figures(), &analysis});
     output.finish(stepper, summary);
 
     if (!options.quiet) {

@@ -1,6 +1,7 @@
 // ctest-labels: foam carrier
 // The OpenFOAM reader on files OpenFOAM v1912 wrote (tests/foam/data/README.md): polyMesh and
 // fields in ASCII, binary and gzip-compressed ASCII, on a hex and a polyhedral mesh; errors.
+#include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/foam_field.h"
 #include "slides/carrier/foam_mesh.h"
 #include "slides/core/error.h"
@@ -192,6 +193,40 @@ TEST_F(BadField, NoSlipWallIsAtRest) {
     const auto field = readFoamVolField<Vec3>(directory_ / "0", "p", mesh_);
     EXPECT_EQ(field.patchValues[2], std::vector<Vec3>(12, Vec3::Zero()));
     EXPECT_TRUE(field.patchValues[1].empty());
+}
+
+// Bad values in the carrier are reported with the cell, never sampled: NaN (a diverged
+// solution writes "nan"), infinity, and k, ε, T outside their physical bounds.
+TEST_F(BadField, NonFiniteValuesNameTheCellOrFace) {
+    writeField("volScalarField",
+               "internalField nonuniform List<scalar> 12\n(\n1 2 3 4 5 nan 7 8 9 10 11 12\n);\n");
+    InputError error = readError();
+    EXPECT_NE(error.file().find("0/p"), std::string::npos) << error.what();
+    EXPECT_NE(error.reason().find("cell 5 of internalField holds nan"), std::string::npos)
+        << error.what();
+    writeField("volScalarField", "internalField uniform 1;\nboundaryField\n{\n"
+                                 " inlet { type fixedValue; value uniform inf; }\n}\n");
+    error = readError();
+    EXPECT_NE(error.reason().find("face 0 of patch inlet holds inf"), std::string::npos)
+        << error.what();
+}
+
+TEST_F(BadField, NegativeTurbulenceEnergyNamesTheCell) {
+    std::ofstream(directory_ / "0" / "U")
+        << "FoamFile\n{\n    format ascii;\n    class volVectorField;\n    object U;\n}\n"
+        << "internalField uniform (1 0 0);\n";
+    std::ofstream(directory_ / "0" / "k")
+        << "FoamFile\n{\n    format ascii;\n    class volScalarField;\n    object k;\n}\n"
+        << "internalField nonuniform List<scalar> 12\n(\n1 2 3 4 5 6 7 8 9 -0.25 11 12\n);\n";
+    try {
+        FoamCarrier carrier(directory_, {});
+        ADD_FAILURE() << "a negative k was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(error.file().find("0/k"), std::string::npos) << error.what();
+        EXPECT_NE(error.reason().find("cell 9 has k = -0.25, which must be at least 0"),
+                  std::string::npos)
+            << error.what();
+    }
 }
 
 TEST_F(BadField, TimeDirectories) {

@@ -222,8 +222,11 @@ TEST(UnsteadyKeys, ReachTheSceneAndMagnusNeedsSpin) {
     EXPECT_DOUBLE_EQ(scene.physics.historyAccuracy, 1e-4);
     EXPECT_TRUE(scene.physics.addedMass && scene.physics.pressureGradient && scene.physics.spin);
     EXPECT_EQ(scene.physics.lift, LiftModel::saffmanMeiMagnus);
+    // Spin left to auto follows Magnus lift; spin set off with Magnus lift is an error.
+    EXPECT_TRUE(readDefaultCaseWithPhysics("lift magnus;").physics.spin);
+    EXPECT_FALSE(readDefaultCaseWithPhysics("lift saffmanMei;").physics.spin);
     try {
-        readDefaultCaseWithPhysics("lift magnus;");
+        readDefaultCaseWithPhysics("lift magnus; spin off;");
         ADD_FAILURE() << "magnus lift without spin was accepted";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("physics.lift"), std::string::npos)

@@ -11,6 +11,7 @@
 #include "slides/core/vector.h"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -68,6 +69,17 @@ public:
                             double time, CarrierNeeds needs, CarrierSample& out) const {
         (void)locations;
         sample(points, time, needs, out);
+    }
+
+    /// The optional fields the carrier can fill (the velocity and its gradient it always can).
+    virtual CarrierNeeds provides() const { return {.velocityGradient = true}; }
+
+    /// The length over which the interpolated field changes form near a location (a mesh
+    /// cell's size, a lattice's spacing) [m]: a step should cross few of them. Infinite for a
+    /// smooth analytic field.
+    virtual double resolutionLength(std::int32_t location) const {
+        (void)location;
+        return std::numeric_limits<double>::infinity();
     }
 
     /// Figures the carrier reports about itself for the run summary (name, value), e.g. the

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 
 namespace slides {
@@ -80,15 +81,17 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
     const PointWeights weights(mesh_);
     velocity_ = std::make_unique<InterpolableField<Vec3>>(
         readFoamVolField<Vec3>(timeDirectory_, "U", mesh_), mesh_, weights);
-    const auto optionalScalar =
-        [&](const std::string& name) -> std::unique_ptr<InterpolableField<double>> {
+    // k, ε and T when present, each within its physical bound.
+    const auto optionalScalar = [&](const std::string& name, double minimum,
+                                    bool inclusive) -> std::unique_ptr<InterpolableField<double>> {
         if (!FoamFile::exists(timeDirectory_ / name)) return nullptr;
-        return std::make_unique<InterpolableField<double>>(
-            readFoamVolField<double>(timeDirectory_, name, mesh_), mesh_, weights);
+        auto field = readFoamVolField<double>(timeDirectory_, name, mesh_);
+        requireAtLeast(field, minimum, inclusive, name);
+        return std::make_unique<InterpolableField<double>>(std::move(field), mesh_, weights);
     };
-    k_ = optionalScalar("k");
-    epsilon_ = optionalScalar("epsilon");
-    temperature_ = optionalScalar("T");
+    k_ = optionalScalar("k", 0, true);
+    epsilon_ = optionalScalar("epsilon", 0, true);
+    temperature_ = optionalScalar("T", 0, false);
     if (settings_.interpolation == FoamInterpolation::cell)
         cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
     if (settings_.interpolation == FoamInterpolation::lattice) buildLattice(caseDirectory);
@@ -303,6 +306,28 @@ std::vector<std::string> FoamCarrier::boundaryNames() const {
     std::vector<std::string> names;
     for (const auto& patch : mesh_.patches) names.push_back(patch.name);
     return names;
+}
+
+CarrierNeeds FoamCarrier::provides() const {
+    return {.velocityGradient = true,
+            .turbulence = k_ != nullptr && epsilon_ != nullptr,
+            .temperature = temperature_ != nullptr};
+}
+
+double FoamCarrier::resolutionLength(std::int32_t location) const {
+    if (lattice_) return lattice_->frame().spacing;
+    if (location < 0 || location >= mesh_.cellCount) return std::numeric_limits<double>::infinity();
+    const bool planar = wedge_ || emptyNormal_;
+    double area = 0;
+    for (const int face : mesh_.facesOf(location)) {
+        const int patch = mesh_.facePatch[face];
+        if (planar && patch >= 0 &&
+            (mesh_.patches[patch].type == PatchType::wedge ||
+             mesh_.patches[patch].type == PatchType::empty))
+            continue;
+        area += mesh_.faceAreas[face].norm();
+    }
+    return (planar ? 4.0 : 6.0) * mesh_.cellVolumes[location] / area;
 }
 
 std::string FoamCarrier::describe() const {

@@ -52,6 +52,10 @@ public:
     void sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations, double time,
                     CarrierNeeds needs, CarrierSample& out) const override;
     std::string describe() const override;
+    CarrierNeeds provides() const override;
+    /// The size of cell location: 6V/A of its faces in 3-D, 4V/A of the faces not on wedge or
+    /// empty patches for a wedge or 2-D mesh; the lattice's spacing for the lattice scheme.
+    double resolutionLength(std::int32_t location) const override;
 
     const FoamMesh& mesh() const { return mesh_; }
     const FoamLocator& locator() const { return *locator_; }

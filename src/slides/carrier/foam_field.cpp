@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <optional>
 #include <regex>
+#include <sstream>
+#include <type_traits>
 
 namespace slides {
 
@@ -122,7 +124,54 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
         }
     }
     if (!hasInternal) in.fail("no internalField");
+    requireFinite(field, mesh);
     return field;
+}
+
+namespace {
+
+bool isFinite(double value) { return std::isfinite(value); }
+bool isFinite(const Vec3& value) { return value.allFinite(); }
+
+template <typename T> std::string text(const T& value) {
+    std::ostringstream out;
+    if constexpr (std::is_same_v<T, double>)
+        out << value;
+    else
+        out << "(" << value.transpose() << ")";
+    return out.str();
+}
+
+} // namespace
+
+template <typename T> void requireFinite(const FoamVolField<T>& field, const FoamMesh& mesh) {
+    for (std::size_t cell = 0; cell < field.cells.size(); ++cell)
+        if (!isFinite(field.cells[cell]))
+            throw InputError(field.file, 0, "",
+                             "cell " + std::to_string(cell) + " of internalField holds " +
+                                 text(field.cells[cell]) + ", not a finite value");
+    for (std::size_t patch = 0; patch < field.patchValues.size(); ++patch)
+        for (std::size_t face = 0; face < field.patchValues[patch].size(); ++face)
+            if (!isFinite(field.patchValues[patch][face]))
+                throw InputError(field.file, 0, "",
+                                 "face " + std::to_string(face) + " of patch " +
+                                     mesh.patches[patch].name + " holds " +
+                                     text(field.patchValues[patch][face]) + ", not a finite value");
+}
+
+template void requireFinite<double>(const FoamVolField<double>&, const FoamMesh&);
+template void requireFinite<Vec3>(const FoamVolField<Vec3>&, const FoamMesh&);
+
+void requireAtLeast(const FoamVolField<double>& field, double minimum, bool inclusive,
+                    const std::string& quantity) {
+    for (std::size_t cell = 0; cell < field.cells.size(); ++cell) {
+        const double value = field.cells[cell];
+        if (inclusive ? value >= minimum : value > minimum) continue;
+        throw InputError(field.file, 0, "",
+                         "cell " + std::to_string(cell) + " has " + quantity + " = " + text(value) +
+                             ", which must be " + (inclusive ? "at least " : "above ") +
+                             text(minimum));
+    }
 }
 
 template FoamVolField<double> readFoamVolField<double>(const std::filesystem::path&,

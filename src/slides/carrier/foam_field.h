@@ -30,6 +30,15 @@ template <typename T>
 FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                                  const std::string& name, const FoamMesh& mesh);
 
+/// InputError naming the field's file and the first cell (or patch face) whose value is not
+/// finite: NaN or infinity from a diverged solution must not reach the particles.
+template <typename T> void requireFinite(const FoamVolField<T>& field, const FoamMesh& mesh);
+
+/// InputError naming the file and the first cell whose value is below minimum (k, ε ≥ 0,
+/// T > 0 are physical bounds a diverged or badly initialised field breaks).
+void requireAtLeast(const FoamVolField<double>& field, double minimum, bool inclusive,
+                    const std::string& quantity);
+
 /// The time directory of caseDirectory named by time: "latestTime" (the largest numeric
 /// directory holding U), or a time value such as "0.5" (compared as numbers, like `-time`).
 std::filesystem::path foamTimeDirectory(const std::filesystem::path& caseDirectory,

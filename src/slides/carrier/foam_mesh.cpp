@@ -66,6 +66,9 @@ FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
     {
         FoamFile in(dir / "points");
         mesh.points = in.list<Vec3>();
+        for (std::size_t p = 0; p < mesh.points.size(); ++p)
+            if (!mesh.points[p].allFinite())
+                in.fail("point " + std::to_string(p) + " is not finite");
     }
     {
         FoamFile in(dir / "faces");

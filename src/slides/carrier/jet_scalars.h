@@ -72,6 +72,10 @@ public:
         if (needs.turbulence) sampleTurbulence(points, out);
     }
 
+    CarrierNeeds provides() const override {
+        return {
+            .velocityGradient = true, .turbulence = turbulence_.has_value(), .temperature = true};
+    }
     std::string describe() const override {
         std::ostringstream text;
         text << jet_->describe() << "; gas temperature " << temperature_ << " K";

@@ -4,6 +4,7 @@
 // documents each dictionary entry is config/scene_keys.cpp (`slides-track --list-keys`).
 #pragma once
 
+#include "slides/analysis/physics_terms.h"
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/jet_frame.h"
@@ -73,6 +74,7 @@ struct ParticleSettings {
     RadiusDistribution radius;
     MaterialSettings material;
     double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
+    double thermalConductivity = 0;  ///< K_p [W/(m K)], for the Biot number; 0: not given
     double injectionTemperature = 0; ///< θ at injection [K], heat transfer
 };
 
@@ -99,6 +101,10 @@ struct PhysicsSettings {
     DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
     DispersionConstants dispersionConstants;
     HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
+    /// Terms left to the scene analysis (`auto`), off until it turns them on.
+    std::vector<AutomaticTerm> automaticTerms;
+    /// Largest estimated effect of a term that auto turns off (analysis/scene_analysis.h).
+    double autoThreshold = 0.01;
 
     /// Whether any unsteady term is on: then the Maxey–Riley step replaces the integrator.
     bool unsteadyForces() const {
@@ -108,7 +114,7 @@ struct PhysicsSettings {
 };
 
 struct TimeSettings {
-    double dt = 0;               ///< [s]
+    double dt = 0;               ///< [s]; 0: the scene analysis chooses it
     double endTime = 0;          ///< [s]; the run also stops earlier when stopWhenAllDone
     bool stopWhenAllDone = true; ///< stop once every particle has arrived or escaped
     Integrator integrator = Integrator::exponentialMidpoint;

@@ -23,6 +23,13 @@ template <typename Table> std::vector<std::string> namesOf(const Table& table) {
     return names;
 }
 
+/// The names of a family whose term the scene analysis may choose, then auto.
+template <typename Table> std::vector<std::string> namesOrAuto(const Table& table) {
+    std::vector<std::string> names = namesOf(table);
+    names.emplace_back("auto");
+    return names;
+}
+
 std::vector<KeyDeclaration> declareKeys() {
     using K = KeyKind;
     using R = KeyRange;
@@ -140,6 +147,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Surface energy γ (Eq. 2.74)."},
         {"particles.specificHeat", K::scalar, "J/(kg K)", "-", {}, R::positive,
          "Particle specific heat c_p; required by physics.heatTransfer."},
+        {"particles.thermalConductivity", K::scalar, "W/(m K)", "-", {}, R::positive,
+         "Particle thermal conductivity K_p, for the Biot number of the scene analysis (the "
+         "lumped temperature of Sec. 3.8 holds for Bi < 0.1)."},
         {"particles.injectionTemperature", K::scalar, "K", "-", {}, R::positive,
          "Particle temperature at injection; default fluid.temperature."},
 
@@ -164,35 +174,48 @@ std::vector<KeyDeclaration> declareKeys() {
          "Subtract the displaced gas's weight, (m − mf) g of Eq. 3.16."},
         {"physics.history", K::dictionary, "-", "-", {}, R::any,
          "Basset history force (Eq. 3.3; physics/history_integrator.h)."},
-        {"physics.history.model", K::word, "-", "none", namesOf(historyModelNames()), R::any,
-         "none: no history force; basset: Basset's kernel, window + exponential-sum tail."},
+        {"physics.history.model", K::word, "-", "auto", namesOrAuto(historyModelNames()),
+         R::any,
+         "none: no history force; basset: Basset's kernel, window + exponential-sum tail; auto: "
+         "basset where the scene analysis finds it matters."},
         {"physics.history.accuracy", K::scalar, "-", "1e-3", {}, R::positive,
          "Relative error of the tail's kernel over the run; sets its window and terms."},
-        {"physics.addedMass", K::boolean, "-", "off", {}, R::any,
+        {"physics.addedMass", K::switchOrAuto, "-", "auto", {}, R::any,
          "Added mass C_A = 1/2 (Eq. 3.3): inertia m_p + m_f/2, and C_A m_f DU/Dt."},
-        {"physics.pressureGradient", K::boolean, "-", "off", {}, R::any,
+        {"physics.pressureGradient", K::switchOrAuto, "-", "auto", {}, R::any,
          "Undisturbed-flow force m_f DU/Dt (Eq. 3.3), DU/Dt = (U·∇)U of the steady carrier."},
-        {"physics.lift", K::word, "-", "none", namesOf(liftModelNames()), R::any,
-         "Saffman–Mei shear lift and/or Magnus spin lift (physics/lift.h); magnus needs spin."},
-        {"physics.spin", K::boolean, "-", "off", {}, R::any,
-         "Particle spin under the viscous torque of Eq. 3.18, relaxing to half the vorticity."},
+        {"physics.lift", K::word, "-", "auto", namesOrAuto(liftModelNames()), R::any,
+         "Saffman–Mei shear lift and/or Magnus spin lift (physics/lift.h); magnus needs spin; "
+         "auto: each part where the scene analysis finds it matters."},
+        {"physics.spin", K::switchOrAuto, "-", "auto", {}, R::any,
+         "Particle spin under the viscous torque of Eq. 3.18, relaxing to half the vorticity; "
+         "auto: on exactly when Magnus lift is."},
+        {"physics.autoThreshold", K::scalar, "-", "0.01", {}, R::positive,
+         "A term set to auto is turned off when the scene analysis estimates its effect below "
+         "this: the velocity change it drives over the largest gas or particle speed, or the "
+         "temperature change over fluid.temperature (README, scene analysis)."},
         {"physics.dispersion", K::dictionary, "-", "-", {}, R::any,
          "Turbulent dispersion (Section 3.9, physics/dispersion.h); needs k, ε from the carrier."},
-        {"physics.dispersion.model", K::word, "-", "none", namesOf(dispersionModelNames()),
+        {"physics.dispersion.model", K::word, "-", "auto", namesOrAuto(dispersionModelNames()),
          R::any,
          "eddyInteraction: Gosman–Ioannides eddies with exponential lifetimes; langevin: "
-         "continuous random walk."},
+         "continuous random walk; auto: eddyInteraction where the scene analysis finds it "
+         "matters."},
         {"physics.dispersion.Cmu", K::scalar, "-", "0.09", {}, R::positive,
          "k-ε C_μ: eddy length C_μ^(3/4) k^(3/2)/ε and, with Sc_t, the time scale T_L."},
         {"physics.dispersion.turbulentSchmidtNumber", K::scalar, "-", "0.7", {}, R::positive,
          "Sc_t: T_L = 3 C_μ k/(2 Sc_t ε), so the tracer diffusivity (2k/3) T_L is ν_t/Sc_t."},
         {"physics.heatTransfer", K::dictionary, "-", "-", {}, R::any,
          "Convective heating of the particles (Section 3.8, physics/heat_transfer.h)."},
-        {"physics.heatTransfer.model", K::word, "-", "none", namesOf(heatTransferModelNames()),
-         R::any, "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28)."},
+        {"physics.heatTransfer.model", K::word, "-", "auto",
+         namesOrAuto(heatTransferModelNames()), R::any,
+         "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28); auto: "
+         "ranzMarshall where the scene analysis finds it matters."},
 
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
-        {"time.dt", K::scalar, "s", "", {}, R::positive, "Time step."},
+        {"time.dt", K::scalar, "s", "-", {}, R::positive,
+         "Time step; default: the scene analysis's choice from the particles' paths (flow "
+         "scale, cell crossing, response time, eddy lifetime, collision time)."},
         {"time.endTime", K::scalar, "s", "", {}, R::positive, "Latest end of the run."},
         {"time.stopWhenAllDone", K::boolean, "-", "yes", {}, R::any,
          "Stop before endTime once every particle is injected and has arrived or escaped."},
@@ -201,8 +224,9 @@ std::vector<KeyDeclaration> declareKeys() {
 
         {"collisions", K::dictionary, "-", "-", {}, R::any,
          "Contacts between particles, and the laws of every impulse contact (collide/)."},
-        {"collisions.model", K::word, "-", "none", namesOf(collisionModelNames()), R::any,
-         "Particle–particle collisions: none, or impulse (collide-and-stream, Eq. 2.34–2.58)."},
+        {"collisions.model", K::word, "-", "auto", namesOrAuto(collisionModelNames()), R::any,
+         "Particle–particle collisions: none, impulse (collide-and-stream, Eq. 2.34–2.58), or "
+         "auto: impulse where the scene analysis expects collisions."},
         {"collisions.restitution", K::dictionary, "-", "-", {}, R::any,
          "Restitution of impulse contacts (physics/restitution.h)."},
         {"collisions.restitution.model", K::word, "-", "velocityDependent",
@@ -302,6 +326,7 @@ std::string kindName(const KeyDeclaration& key) {
     case KeyKind::word: return "word";
     case KeyKind::wordList: return "list of words";
     case KeyKind::boolean: return "switch";
+    case KeyKind::switchOrAuto: return "switch \\| auto";
     case KeyKind::vector: return "vector";
     case KeyKind::integerTriple: return "3 integers";
     }

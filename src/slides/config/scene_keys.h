@@ -11,7 +11,17 @@
 
 namespace slides {
 
-enum class KeyKind { dictionary, scalar, integer, word, wordList, boolean, vector, integerTriple };
+enum class KeyKind {
+    dictionary,
+    scalar,
+    integer,
+    word,
+    wordList,
+    boolean,
+    switchOrAuto, ///< a switch (on, off, yes, ...) or auto
+    vector,
+    integerTriple
+};
 
 /// Range a number must lie in.
 enum class KeyRange { any, positive, nonNegative, atLeastOne };

@@ -50,6 +50,26 @@ public:
                     [](const Dictionary& d, const std::string& key) { return d.boolean(key); });
     }
 
+    /// A switch, or nullopt for auto.
+    std::optional<bool> switchOrAuto(const std::string& path) const {
+        return read(path, [](const Dictionary& d, const std::string& key) -> std::optional<bool> {
+            const DictEntry* entry = d.find(key);
+            if (entry && entry->items.size() == 1 && entry->items[0].isWord() &&
+                entry->items[0].text() == "auto")
+                return std::nullopt;
+            return d.boolean(key);
+        });
+    }
+
+    /// The value of a model family's key: nullopt for auto, else the model named.
+    template <typename Table>
+    std::optional<decltype(Table{}[0].value)> modelOrAuto(const std::string& path,
+                                                          const Table& table) const {
+        const std::string name = word(path);
+        if (name == "auto") return std::nullopt;
+        return *valueNamed(table, name);
+    }
+
     Vec3 vector(const std::string& path) const {
         return read(
             path, [](const Dictionary& d, const std::string& key) { return Vec3(d.vector(key)); });
@@ -282,33 +302,76 @@ std::optional<JetTurbulence> readJetTurbulence(const KeyReader& keys) {
     return turbulence;
 }
 
+/// The unsteady forces and spin of physics, as given or left to the scene analysis (auto).
+void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
+    PhysicsSettings& physics = scene.physics;
+    auto& automatic = physics.automaticTerms;
+    const auto history = keys.modelOrAuto("physics.history.model", historyModelNames());
+    physics.history = history.value_or(HistoryModel::none);
+    if (!history) automatic.push_back({PhysicsTerm::history, ""});
+    physics.historyAccuracy = keys.scalar("physics.history.accuracy");
+    if (physics.historyAccuracy >= 1)
+        keys.fail("physics.history.accuracy", "must be below 1 (a relative error)");
+    const auto addedMass = keys.switchOrAuto("physics.addedMass");
+    physics.addedMass = addedMass.value_or(false);
+    if (!addedMass) automatic.push_back({PhysicsTerm::addedMass, ""});
+    const auto pressureGradient = keys.switchOrAuto("physics.pressureGradient");
+    physics.pressureGradient = pressureGradient.value_or(false);
+    if (!pressureGradient) automatic.push_back({PhysicsTerm::pressureGradient, ""});
+
+    const auto spin = keys.switchOrAuto("physics.spin");
+    const auto lift = keys.modelOrAuto("physics.lift", liftModelNames());
+    physics.lift = lift.value_or(LiftModel::none);
+    if (!lift) {
+        automatic.push_back({PhysicsTerm::shearLift, ""});
+        automatic.push_back({PhysicsTerm::spinLift, spin == false ? "needs physics.spin" : ""});
+    }
+    if (usesSpinLift(physics.lift) && spin == false)
+        keys.fail("physics.lift", "magnus lift needs the particle spin: set physics.spin on");
+    // Spin only matters to Magnus lift: auto follows it (given, or as the analysis decides).
+    physics.spin = spin.value_or(usesSpinLift(physics.lift));
+    if (!spin && !lift) automatic.push_back({PhysicsTerm::spin, ""});
+}
+
 /// physics.dispersion and physics.heatTransfer with what they need from the other sections.
 void readDispersionAndHeat(const KeyReader& keys, Scene& scene) {
     PhysicsSettings& physics = scene.physics;
-    physics.dispersion = *valueNamed(dispersionModelNames(), keys.word("physics.dispersion.model"));
+    const auto dispersion = keys.modelOrAuto("physics.dispersion.model", dispersionModelNames());
+    physics.dispersion = dispersion.value_or(DispersionModel::none);
+    const bool laminarJet =
+        scene.carrier.type != CarrierType::foamField && !scene.carrier.turbulence;
+    if (!dispersion)
+        physics.automaticTerms.push_back(
+            {PhysicsTerm::dispersion, laminarJet ? "needs carrier.turbulence (k, ε)" : ""});
     physics.dispersionConstants.Cmu = keys.scalar("physics.dispersion.Cmu");
     physics.dispersionConstants.turbulentSchmidtNumber =
         keys.scalar("physics.dispersion.turbulentSchmidtNumber");
     // An OpenFOAM carrier brings its own k and ε fields; an analytic jet needs them described.
     if (physics.dispersion != DispersionModel::none && scene.carrier.type != CarrierType::foamField)
         keys.require("carrier.turbulence", "by physics.dispersion (k and ε of an analytic jet)");
-    physics.heatTransfer =
-        *valueNamed(heatTransferModelNames(), keys.word("physics.heatTransfer.model"));
+    const auto heat = keys.modelOrAuto("physics.heatTransfer.model", heatTransferModelNames());
+    physics.heatTransfer = heat.value_or(HeatTransferModel::none);
+    if (!heat)
+        physics.automaticTerms.push_back(
+            {PhysicsTerm::heatTransfer,
+             keys.has("particles.specificHeat") ? "" : "needs particles.specificHeat"});
+    scene.particles.thermalConductivity =
+        keys.optionalScalar("particles.thermalConductivity").value_or(0);
     scene.fluid.thermalConductivity = keys.scalar("fluid.thermalConductivity");
     scene.fluid.specificHeat = keys.scalar("fluid.specificHeat");
     scene.particles.injectionTemperature =
         keys.optionalScalar("particles.injectionTemperature").value_or(scene.fluid.temperature);
-    if (physics.heatTransfer != HeatTransferModel::none) {
+    if (physics.heatTransfer != HeatTransferModel::none)
         keys.require("particles.specificHeat", "by physics.heatTransfer");
-        scene.particles.specificHeat = keys.scalar("particles.specificHeat");
-    }
+    scene.particles.specificHeat = keys.optionalScalar("particles.specificHeat").value_or(0);
 }
 
 /// collisions and deposition, and what their laws need of the particles' and surfaces'
 /// materials (after the surfaces are read).
 void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     CollisionSettings& collisions = scene.collisions;
-    collisions.model = *valueNamed(collisionModelNames(), keys.word("collisions.model"));
+    const auto model = keys.modelOrAuto("collisions.model", collisionModelNames());
+    collisions.model = model.value_or(CollisionModel::none);
     RestitutionSettings& restitution = collisions.restitution;
     restitution.model =
         *valueNamed(restitutionModelNames(), keys.word("collisions.restitution.model"));
@@ -330,6 +393,14 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
 
     // The materials each law reads (physics/contact_pair.h, restitution.h, adhesion.h).
     const bool velocityDependent = restitution.model == RestitutionModel::velocityDependent;
+    if (!model) { // auto: impulses need what requireMaterial below asks of the particles
+        std::string unavailable;
+        for (const char* property : {"bulkModulus", "shearModulus", "yieldStress"})
+            if (velocityDependent && unavailable.empty() &&
+                !keys.has(std::string("particles.material.") + property))
+                unavailable = std::string("needs particles.material.") + property;
+        scene.physics.automaticTerms.push_back({PhysicsTerm::collisions, unavailable});
+    }
     const auto requireMaterial = [&](const std::string& base, bool needsYield,
                                      const std::string& because) {
         if (velocityDependent) {
@@ -471,16 +542,8 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.drag = *valueNamed(dragModelNames(), keys.word("physics.drag"));
     scene.physics.gravity = keys.vector("physics.gravity");
     scene.physics.buoyancy = keys.boolean("physics.buoyancy");
-    scene.physics.history = *valueNamed(historyModelNames(), keys.word("physics.history.model"));
-    scene.physics.historyAccuracy = keys.scalar("physics.history.accuracy");
-    if (scene.physics.historyAccuracy >= 1)
-        keys.fail("physics.history.accuracy", "must be below 1 (a relative error)");
-    scene.physics.addedMass = keys.boolean("physics.addedMass");
-    scene.physics.pressureGradient = keys.boolean("physics.pressureGradient");
-    scene.physics.lift = *valueNamed(liftModelNames(), keys.word("physics.lift"));
-    scene.physics.spin = keys.boolean("physics.spin");
-    if (usesSpinLift(scene.physics.lift) && !scene.physics.spin)
-        keys.fail("physics.lift", "magnus lift needs the particle spin: set physics.spin on");
+    scene.physics.autoThreshold = keys.scalar("physics.autoThreshold");
+    readUnsteadyForces(keys, scene);
     readDispersionAndHeat(keys, scene);
     if (scene.physics.unsteadyForces() && (scene.physics.dispersion != DispersionModel::none ||
                                            scene.physics.heatTransfer != HeatTransferModel::none))
@@ -489,7 +552,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
                   "cannot yet be combined with the unsteady forces (history, addedMass, "
                   "pressureGradient, lift, spin)");
 
-    scene.time.dt = keys.scalar("time.dt");
+    scene.time.dt = keys.optionalScalar("time.dt").value_or(0);
     scene.time.endTime = keys.scalar("time.endTime");
     if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
     scene.time.stopWhenAllDone = keys.boolean("time.stopWhenAllDone");

@@ -21,6 +21,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                .temperature =
                                    scene.physics.heatTransfer != HeatTransferModel::none},
       dispersion_(scene), heating_(scene), surfaces_(scene) {
+    if (!(scene.time.dt > 0))
+        throw std::logic_error("time.dt is not set: the scene analysis chooses it "
+                               "(analysis/scene_analysis.h)");
     if (scene.physics.unsteadyForces()) {
         maxeyRiley_.emplace(scene);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
