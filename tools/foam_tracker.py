@@ -85,7 +85,14 @@ particles
 
 injection {{ mode allAtStart; crossSpanSpeed 0; seed {seed}; }}
 
-physics {{ drag putnam; gravity (0 -9.81 0); buoyancy on; }}
+// OpenFOAM's cloud has drag, gravity and buoyancy only: every other term off, not auto.
+physics
+{{
+    drag putnam; gravity (0 -9.81 0); buoyancy on;
+    history {{ model none; }} addedMass off; pressureGradient off; lift none; spin off;
+    dispersion {{ model none; }} heatTransfer {{ model none; }}
+}}
+collisions {{ model none; }}
 
 time {{ dt {dt}; endTime {end_time}; stopWhenAllDone yes; integrator exponentialMidpoint; }}
 

@@ -69,8 +69,9 @@ TEST_P(StepSweep, FromAHundredthToAThousandResponseTimesErrorsShrinkWithTheStep)
             << "dt = " << 1 / stepsPerTau << " τ";
         const double error = (state.position - exact.position).norm();
         // Once the step resolves the rotation (ω dt < 1; at 1000 τ, ω dt = 3.8).
-        if (20 * scene.time.dt < 1)
+        if (20 * scene.time.dt < 1) {
             EXPECT_LT(error, previousError) << "dt = " << 1 / stepsPerTau << " τ";
+        }
         // Bounded even at a thousand response times: on the gas's circle within 0.5 m.
         EXPECT_LT(state.position.norm(), 1.0);
         previousError = error;

@@ -58,6 +58,16 @@ private:
 /// The force terms estimated by the deviation they drive (term_estimates.h).
 enum ForceTerm { pressureGradientForce, addedMassForce, shearLiftForce, spinLiftForce, forceTerms };
 
+/// The force row of a term estimated by its deviation.
+ForceTerm forceOf(PhysicsTerm term) {
+    switch (term) {
+    case PhysicsTerm::addedMass: return addedMassForce;
+    case PhysicsTerm::pressureGradient: return pressureGradientForce;
+    case PhysicsTerm::shearLift: return shearLiftForce;
+    default: return spinLiftForce;
+    }
+}
+
 /// One pilot particle's estimates so far, and its slip path for the Basset integral.
 struct Track {
     std::array<Vec3, forceTerms> deviation{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
@@ -346,15 +356,10 @@ void PathEstimator::decide(SceneAnalysis& analysis, const CarrierField& carrier)
         case PhysicsTerm::addedMass:
         case PhysicsTerm::pressureGradient:
         case PhysicsTerm::shearLift:
-        case PhysicsTerm::spinLift: {
-            const int force = row.value == PhysicsTerm::addedMass          ? addedMassForce
-                              : row.value == PhysicsTerm::pressureGradient ? pressureGradientForce
-                              : row.value == PhysicsTerm::shearLift        ? shearLiftForce
-                                                                           : spinLiftForce;
-            decision.effect = largestDeviation_[force] / speed;
-            decision.peakToDrag = peakToDrag_[force];
+        case PhysicsTerm::spinLift:
+            decision.effect = largestDeviation_[forceOf(row.value)] / speed;
+            decision.peakToDrag = peakToDrag_[forceOf(row.value)];
             break;
-        }
         case PhysicsTerm::spin:
             decision.effect = largestDeviation_[spinLiftForce] / speed;
             decision.measure = "dv/U_ref of Magnus lift";

@@ -3,6 +3,7 @@
 #include "slides/carrier/foam_file.h"
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
+#include "slides/core/parallel.h"
 
 #include <Eigen/Geometry>
 
@@ -274,7 +275,7 @@ void FoamCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
     if (needs.temperature && !temperature_) missing("T");
     out.resize(points.size(), needs);
     const auto count = static_cast<std::ptrdiff_t>(points.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i)
         sampleAt(points[i], locations[i], needs, out, static_cast<std::size_t>(i));
 }

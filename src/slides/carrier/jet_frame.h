@@ -28,6 +28,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/core/parallel.h"
 #include "slides/core/vector.h"
 
 #include <span>
@@ -97,7 +98,7 @@ void JetFrame::sample(const Profile& profile, std::span<const Vec3> points, Carr
     const Vec3& axis = nozzle_.axis;
     const bool planar = geometry_ == JetGeometry::planar;
     const auto count = static_cast<std::ptrdiff_t>(points.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const Vec3 offset = points[i] - nozzle_.centre;

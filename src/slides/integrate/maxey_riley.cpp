@@ -1,5 +1,6 @@
 #include "slides/integrate/maxey_riley.h"
 
+#include "slides/core/parallel.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/spin.h"
@@ -48,7 +49,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
     predictedVelocity_.resize(cloud.size());
     smoothVelocity_.resize(cloud.size());
     startModes_.resize(cloud.size());
-#pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         double* state = stateOf(i);
         const double h = stepLengths[i];
@@ -77,7 +78,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
 
     const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
     const LiftModel lift = scene_.physics.lift;
-#pragma omp parallel for schedule(static) if (count >= 256) // a few particles: no thread wake-ups
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         double* state = stateOf(i);
         const double radius = cloud.radius[i];

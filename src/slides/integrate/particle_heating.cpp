@@ -1,5 +1,6 @@
 #include "slides/integrate/particle_heating.h"
 
+#include "slides/core/parallel.h"
 #include "slides/physics/drag.h"
 
 #include <cstddef>
@@ -22,7 +23,7 @@ void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
     if (!on()) return;
     cloud.temperature.resize(cloud.size(), injectionTemperature_); // new particles
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const double radius = cloud.radius[i];

@@ -1,5 +1,6 @@
 #include "slides/integrate/stepper.h"
 
+#include "slides/core/parallel.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
 
@@ -111,7 +112,7 @@ void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
                  const std::vector<double>& radius, const DragParameters& drag, const Vec3& a,
                  const std::vector<double>& h, double fraction) {
     const auto count = static_cast<std::ptrdiff_t>(x.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         const double tau = dragResponseTime(drag, radius[i], (u[i] - w[i]).norm());
         scheme(x[i], v[i], u[i], tau, a, fraction * h[i]);

@@ -1,4 +1,5 @@
 #include "slides/integrate/turbulent_dispersion.h"
+#include "slides/core/parallel.h"
 
 #include <cstddef>
 
@@ -15,7 +16,7 @@ void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
     cloud.eddy.resize(cloud.size()); // new particles start without an eddy
     fluctuations_.resize(cloud.size());
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const double k = gas.turbulentKineticEnergy[i];
