@@ -90,6 +90,35 @@ TEST_P(LumpedHeating, FollowsTheExactExponentialForAnyStep) {
     }
 }
 
+TEST_P(LumpedHeating, ArrivalTakesTheTemperatureAtTheTouch) {
+    // The same particle carried at 3 m/s onto a sink 10 mm downstream: it touches at
+    // t_a = (0.01 − R)/3, inside a step, and arrives with θ(t_a) of the exponential, not with
+    // the temperature at the step's end (which made arrival temperatures first order in dt).
+    Scene scene = test::singleParticleScene();
+    scene.particles.radius.value = 40e-6;
+    scene.particles.density = 5680;
+    scene.particles.specificHeat = 460;
+    scene.particles.injectionTemperature = 500;
+    scene.fluid.thermalConductivity = 0.0257;
+    scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
+    const double tau =
+        thermalResponseTime(scene.particles.density, scene.particles.specificHeat,
+                            scene.particles.radius.value, 2.0, scene.fluid.thermalConductivity);
+    scene.surfaces.push_back(
+        {"sink", Vec3(0.01, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb});
+    const double arrivalTime = (0.01 - 40e-6) / 3;
+    scene.time.dt = 1.37 * GetParam() * arrivalTime; // the touch falls inside a step
+    scene.time.endTime = 20 * arrivalTime;
+    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(3, 0, 0));
+    Stepper stepper(scene, gas);
+    while (!stepper.finished()) stepper.step();
+    ASSERT_EQ(stepper.arrivals().size(), 1u);
+    const Arrival& arrival = stepper.arrivals()[0];
+    EXPECT_NEAR(arrival.time, arrivalTime, 1e-15);
+    EXPECT_NEAR(arrival.temperature, 300 + 200 * std::exp(-arrivalTime / tau), 200 * 1e-12)
+        << "τ_θ = " << tau << " s";
+}
+
 INSTANTIATE_TEST_SUITE_P(StepsOfATenthAndFiveResponseTimes, LumpedHeating,
                          ::testing::Values(0.1, 5.0));
 

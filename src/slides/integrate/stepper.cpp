@@ -94,6 +94,10 @@ void Stepper::step() {
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
     advance(h);
+    if (heating_.on()) {
+        startTemperatures_ = cloud_.temperature;
+        startTemperatures_.resize(cloud_.size(), scene_.particles.injectionTemperature);
+    }
     heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
     if (collisions_) collisions_->collide(cloud_, startPositions_, stepLengths_);
     meetSurfaces(h);
@@ -168,6 +172,11 @@ void Stepper::sampleCarrier(const std::vector<Vec3>& points, std::vector<std::in
         carrier_.sample(points, time, needs, out);
 }
 
+std::optional<StepTemperature> Stepper::temperatureOver(std::size_t i) const {
+    if (!heating_.on()) return std::nullopt;
+    return StepTemperature{startTemperatures_[i], gas_.temperature[i]};
+}
+
 void Stepper::meetSurfaces(double h) {
     surfaces_.indexDeposit();
     // Backwards, so the particle swapped into a removed slot has already been handled.
@@ -184,7 +193,7 @@ void Stepper::meetSurfaces(double h) {
         Arrival arrival;
         const ImpactResult impact =
             surfaces_.meet(cloud_, i, startPositions_[i], startVelocities_[i], stepLengths_[i],
-                           time_ + h, arrival);
+                           time_ + h, temperatureOver(i), arrival);
         if (impact == ImpactResult::arrived) {
             arrivals_.push_back(arrival);
         } else if (insideBox(scene_.domain, cloud_.position[i]) &&

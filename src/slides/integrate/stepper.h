@@ -92,6 +92,8 @@ private:
     void meetSurfaces(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
     std::size_t exitOf(std::size_t i) const;
+    /// Particle i's temperature over this step, with heat transfer.
+    std::optional<StepTemperature> temperatureOver(std::size_t i) const;
     /// The carrier at points, from and updating their locations when the carrier keeps them.
     void sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
                        double time, CarrierNeeds needs, CarrierSample& out) const;
@@ -122,6 +124,7 @@ private:
     std::vector<double> stepLengths_; ///< h, or the remainder of the step for new particles
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
+    std::vector<double> startTemperatures_; ///< with heat transfer
     std::vector<Vec3> midpointPositions_;
     std::vector<Vec3> midpointVelocities_;
     std::vector<std::int32_t> midpointLocations_; ///< a mesh carrier's cells of the midpoints

@@ -26,6 +26,7 @@
 // in nusseltNumber(); tests/verification/test_heat_transfer.cpp checks Nu → 2 as Re → 0.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string_view>
@@ -83,6 +84,16 @@ inline double thermalResponseTime(double particleDensity, double particleSpecifi
 inline double relaxTemperature(double temperature, double gasTemperature, double responseTime,
                                double h) {
     return gasTemperature + (temperature - gasTemperature) * std::exp(-h / responseTime);
+}
+
+/// θ at fraction f of a step over which it relaxed from θ0 to θ1 toward θf: the exponential
+/// through both, θf + (θ0 − θf) ((θ1 − θf)/(θ0 − θf))^f (a surface touched within the step).
+inline double temperatureWithinStep(double start, double end, double gasTemperature,
+                                    double fraction) {
+    if (start == gasTemperature) return start;
+    const double remaining =
+        std::clamp((end - gasTemperature) / (start - gasTemperature), 0.0, 1.0);
+    return gasTemperature + (start - gasTemperature) * std::pow(remaining, fraction);
 }
 
 } // namespace slides

@@ -12,7 +12,7 @@ struct Arrival {
     Vec3 position;          ///< centre at first touch [m]
     Vec3 velocity;          ///< impact velocity [m/s]
     double radius = 0;      ///< [m]
-    double temperature = 0; ///< [K] at the end of the arrival step; 0 without heat transfer
+    double temperature = 0; ///< [K] at the touch; 0 without heat transfer
 };
 
 } // namespace slides

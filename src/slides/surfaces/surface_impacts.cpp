@@ -3,6 +3,7 @@
 #include "slides/collide/impulse.h"
 #include "slides/physics/adhesion.h"
 #include "slides/physics/contact_pair.h"
+#include "slides/physics/heat_transfer.h"
 #include "slides/physics/restitution.h"
 #include "slides/surfaces/plane_contact.h"
 
@@ -16,12 +17,18 @@ SurfaceImpacts::SurfaceImpacts(const Scene& scene)
 
 ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
                                   const Vec3& startVelocity, double stepLength, double stepEnd,
+                                  const std::optional<StepTemperature>& temperature,
                                   Arrival& arrival) {
     Path path{start, startVelocity, stepLength};
     ImpactResult result = ImpactResult::none;
     // A rebound can meet another surface, or the deposit, in the rest of the step.
     for (int contact = 0; contact < maxContactsPerStep; ++contact) {
         const ImpactResult impact = meetFirst(cloud, i, path, stepEnd, arrival);
+        if (impact == ImpactResult::arrived && temperature) {
+            const double elapsed = 1 - (stepEnd - arrival.time) / stepLength;
+            arrival.temperature = temperatureWithinStep(temperature->start, cloud.temperature[i],
+                                                        temperature->gas, elapsed);
+        }
         if (impact != ImpactResult::rebounded)
             return impact == ImpactResult::none ? result : impact;
         result = ImpactResult::rebounded;

@@ -25,6 +25,7 @@
 #include "slides/surfaces/deposit.h"
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -32,15 +33,23 @@ namespace slides {
 
 enum class ImpactResult { none, rebounded, arrived };
 
+/// A particle's lumped temperature over its step (integrate/particle_heating.h): at the step's
+/// start and the gas temperature it relaxed toward; an arrival takes its value at the touch.
+struct StepTemperature {
+    double start = 0; ///< [K]
+    double gas = 0;   ///< [K]
+};
+
 class SurfaceImpacts {
 public:
     explicit SurfaceImpacts(const Scene& scene);
 
     /// Meets particle i, which flew from start (velocity startVelocity) to its current state
-    /// over stepLength, ending at time stepEnd. On `arrived`, arrival holds the record.
+    /// over stepLength, ending at time stepEnd (with heat transfer, its temperature over the
+    /// step). On `arrived`, arrival holds the record.
     ImpactResult meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
                       const Vec3& startVelocity, double stepLength, double stepEnd,
-                      Arrival& arrival);
+                      const std::optional<StepTemperature>& temperature, Arrival& arrival);
 
     /// Puts a particle that stuck in an earlier run back into the deposit (restart).
     void addToDeposit(const Arrival& stuck) {
