@@ -61,9 +61,9 @@ TEST(ThermalResponse, IsMassTimesHeatCapacityOverConductance) {
 
 class LumpedHeating : public ::testing::TestWithParam<double> {};
 
-TEST_P(LumpedHeating, FollowsTheExactExponentialForAnyStep) {
-    // A 40 µm particle injected at 500 K with the velocity of uniform 300 K gas: no slip, so
-    // Re = 0, Nu = 2 and τ_θ = 2 ρp c_p R²/(3·2·K_f) is constant.
+/// A 40 µm particle injected at 500 K with the velocity of uniform 300 K gas: no slip, so
+/// Re = 0, Nu = 2 and τ_θ = 2 ρp c_p R²/(3·2·K_f) is constant.
+Scene heatedParticleScene() {
     Scene scene = test::singleParticleScene();
     scene.particles.radius.value = 40e-6;
     scene.particles.density = 5680;
@@ -72,10 +72,18 @@ TEST_P(LumpedHeating, FollowsTheExactExponentialForAnyStep) {
     scene.fluid.thermalConductivity = 0.0257;
     scene.fluid.specificHeat = 1005;
     scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
+    return scene;
+}
+
+double conductionResponseTime(const Scene& scene) { // Nu = 2
+    return thermalResponseTime(scene.particles.density, scene.particles.specificHeat,
+                               scene.particles.radius.value, 2.0, scene.fluid.thermalConductivity);
+}
+
+TEST_P(LumpedHeating, FollowsTheExactExponentialForAnyStep) {
+    Scene scene = heatedParticleScene();
     const double gasTemperature = 300;
-    const double tau =
-        thermalResponseTime(scene.particles.density, scene.particles.specificHeat,
-                            scene.particles.radius.value, 2.0, scene.fluid.thermalConductivity);
+    const double tau = conductionResponseTime(scene);
     scene.time.dt = GetParam() * tau;
     scene.time.endTime = 20 * tau;
     const test::UniformTurbulentGas gas(0.0, 0.0, gasTemperature, Vec3(3, 0, 0));
@@ -94,16 +102,8 @@ TEST_P(LumpedHeating, ArrivalTakesTheTemperatureAtTheTouch) {
     // The same particle carried at 3 m/s onto a sink 10 mm downstream: it touches at
     // t_a = (0.01 − R)/3, inside a step, and arrives with θ(t_a) of the exponential, not with
     // the temperature at the step's end (which made arrival temperatures first order in dt).
-    Scene scene = test::singleParticleScene();
-    scene.particles.radius.value = 40e-6;
-    scene.particles.density = 5680;
-    scene.particles.specificHeat = 460;
-    scene.particles.injectionTemperature = 500;
-    scene.fluid.thermalConductivity = 0.0257;
-    scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
-    const double tau =
-        thermalResponseTime(scene.particles.density, scene.particles.specificHeat,
-                            scene.particles.radius.value, 2.0, scene.fluid.thermalConductivity);
+    Scene scene = heatedParticleScene();
+    const double tau = conductionResponseTime(scene);
     scene.surfaces.push_back(
         {"sink", Vec3(0.01, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb});
     const double arrivalTime = (0.01 - 40e-6) / 3;
