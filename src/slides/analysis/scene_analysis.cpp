@@ -477,6 +477,12 @@ double provisionalTimeStep(const Scene& scene, const CarrierField& carrier) {
     return std::min({0.02 * length / speed, scene.output.interval, scene.time.endTime / 100});
 }
 
+/// Switches every term left to auto as the analysis decided.
+void setAutomaticTerms(const std::vector<TermDecision>& decisions, Scene& scene) {
+    for (const TermDecision& decision : decisions)
+        if (decision.automatic) setTerm(scene, decision.term, decision.on);
+}
+
 } // namespace
 
 SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
@@ -500,8 +506,7 @@ SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
                                     " > 0.1: the lumped particle temperature of Sec. 3.8 does "
                                     "not hold");
     Scene resolved = scene;
-    for (const TermDecision& decision : analysis.terms)
-        if (decision.automatic) setTerm(resolved, decision.term, decision.on);
+    setAutomaticTerms(analysis.terms, resolved);
     estimator.limitTimeStep(analysis, resolved);
     if (analysis.timeStepGiven && scene.time.dt > 2 * analysis.suggestedTimeStep)
         analysis.warnings.push_back("time.dt " + number(scene.time.dt) + " s is above the " +
@@ -513,8 +518,7 @@ SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
 }
 
 void applyAnalysis(const SceneAnalysis& analysis, Scene& scene) {
-    for (const TermDecision& decision : analysis.terms)
-        if (decision.automatic) setTerm(scene, decision.term, decision.on);
+    setAutomaticTerms(analysis.terms, scene);
     const PhysicsSettings& physics = scene.physics;
     if (physics.unsteadyForces() && (physics.dispersion != DispersionModel::none ||
                                      physics.heatTransfer != HeatTransferModel::none)) {
