@@ -114,7 +114,8 @@ int run(const Options& options) {
     Clock::duration stepping{};
     double nextFrame = scene.output.interval;
     if (resumed) {
-        stepper.resume(resumed->counters, std::move(resumed->cloud), std::move(resumed->arrivals));
+        stepper.resume(resumed->counters, std::move(resumed->cloud), std::move(resumed->arrivals),
+                       std::move(resumed->springs));
         nextFrame = resumed->nextFrameTime;
         if (!options.quiet)
             std::printf("restarted from %s at t = %.6g s (step %ld)\n",

@@ -7,6 +7,7 @@
 #include "slides/physics/drag.h"
 #include "slides/physics/heat_transfer.h"
 #include "slides/physics/lift.h"
+#include "slides/physics/soft_contact.h"
 #include "slides/physics/spin.h"
 #include "slides/physics/unsteady.h"
 
@@ -431,6 +432,14 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
         limits.push_back({"eddyLifetime", eddyTimes_.quantile(0.01)});
     if (resolved.collisions.model != CollisionModel::none && largestCollisionRate_ > 0)
         limits.push_back({"collisionTime", 0.25 / largestCollisionRate_});
+    if (resolved.collisions.model == CollisionModel::softSphere && radiusMax_ > 0) {
+        // Eq. 2.59: the shortest Hertz contact, of the smallest spheres at the largest speed.
+        const double mass = sphereMass(radiusMin_, resolved.particles.density);
+        const ContactBody smallest{mass, radiusMin_, &resolved.particles.material};
+        limits.push_back({"contactDuration",
+                          hertzContactDuration(contactPair(smallest, smallest), referenceSpeed_) /
+                              stepsPerSoftContact});
+    }
     limits.push_back({"outputInterval", resolved.output.interval});
     limits.push_back({"endTime", resolved.time.endTime});
     const auto smallest =
@@ -485,7 +494,34 @@ void setAutomaticTerms(const std::vector<TermDecision>& decisions, Scene& scene)
 
 } // namespace
 
+/// A scene without gas (carrier none) has nothing to trace: every term keeps its setting, those
+/// left to auto stay off, and the time step is the one given.
+SceneAnalysis analyseWithoutGas(const Scene& scene) {
+    SceneAnalysis analysis;
+    analysis.threshold = scene.physics.autoThreshold;
+    analysis.timeStepGiven = true;
+    for (const auto& row : physicsTermNames()) {
+        TermDecision decision;
+        decision.term = row.value;
+        decision.effect = notANumber;
+        decision.peakToDrag = notANumber;
+        decision.measure = "-";
+        decision.automatic =
+            std::any_of(scene.physics.automaticTerms.begin(), scene.physics.automaticTerms.end(),
+                        [&](const AutomaticTerm& term) { return term.term == row.value; });
+        decision.on = !decision.automatic && termIsOn(scene, row.value);
+        decision.reason = decision.automatic ? "auto: no carrier gas to estimate it"
+                          : decision.on      ? "set on"
+                                             : "set off";
+        analysis.terms.push_back(decision);
+    }
+    analysis.suggestedTimeStep = scene.time.dt;
+    analysis.timeStepLimitedBy = "time.dt";
+    return analysis;
+}
+
 SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
+    if (scene.carrier.type == CarrierType::none) return analyseWithoutGas(scene);
     SceneAnalysis analysis;
     analysis.threshold = scene.physics.autoThreshold;
     analysis.timeStepGiven = scene.time.dt > 0;

@@ -26,8 +26,11 @@
 // the step makes in the gas a particle sees has moved its velocity by (t/τ) h² there —, a
 // fifth of the response time (explicitEuler or
 // an unsteady force on), the Lagrangian eddy time (dispersion; the eddy model is verified up
-// to dt = 2 T_L), a quarter of the mean time between collisions (collisions), the output
-// interval; each at the 1st percentile of the path points, so that one point does not set it.
+// to dt = 2 T_L), a quarter of the mean time between collisions (collisions), a
+// stepsPerSoftContact-th of the shortest Hertz contact (softSphere: the smallest spheres at
+// U_ref, Eq. 2.59), the output interval; each at the 1st percentile of the path points, so that
+// one point does not set it. A scene without gas (carrier none) is not traced: its auto terms
+// stay off and its time step is the one given.
 //
 //     physics { autoThreshold 0.01; }   // time { dt ...; } given: the analysis only reports
 #pragma once
@@ -44,6 +47,8 @@ namespace slides {
 
 /// The gas velocity change a particle may see in one step of the default time step, over U_ref.
 inline constexpr double flowChangePerStep = 0.02;
+/// Steps over the shortest soft-sphere contact (softSphere collisions; Eq. 2.59).
+inline constexpr double stepsPerSoftContact = 20;
 
 /// One row of the decision table.
 struct TermDecision {

@@ -3,6 +3,7 @@
 #include "slides/carrier/analytic_jet.h"
 #include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/jet_scalars.h"
+#include "slides/carrier/no_gas.h"
 #include "slides/carrier/round_laminar_jet.h"
 #include "slides/core/error.h"
 
@@ -41,6 +42,7 @@ std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
             std::move(jet), carrier.turbulence, scene.fluid.temperature));
     };
     switch (carrier.type) {
+    case CarrierType::none: return std::make_unique<NoGas>();
     case CarrierType::analyticJet:
         return withScalars(std::make_unique<AnalyticJet>(
             scene.nozzle,

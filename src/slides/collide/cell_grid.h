@@ -10,10 +10,15 @@
 
 #include "slides/core/vector.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace slides {
 
@@ -107,5 +112,38 @@ private:
     std::vector<std::size_t> bucketOfPoint_; ///< scratch of build
     std::vector<std::uint32_t> nextSlot_;    ///< scratch of build
 };
+
+/// What test(a, b) finds for every pair of points the grid offers (forEachPairInBuckets), the
+/// pairs for which it returns a value: searched in parallel over blocks of buckets and joined in
+/// bucket order, so the list is the same for any number of threads.
+template <typename Found, typename Test>
+std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
+    const auto buckets = static_cast<std::ptrdiff_t>(grid.bucketCount());
+    constexpr std::ptrdiff_t chunk = 4096;
+    std::vector<std::vector<Found>> perThread;
+#pragma omp parallel
+    {
+#ifdef _OPENMP
+#pragma omp single
+        perThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        auto& found = perThread[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+        perThread.resize(1);
+        auto& found = perThread[0];
+#endif
+        // Static blocks in thread order: joining the threads' lists keeps the bucket order.
+#pragma omp for schedule(static)
+        for (std::ptrdiff_t first = 0; first < buckets; first += chunk) {
+            const auto last = static_cast<std::size_t>(std::min(first + chunk, buckets));
+            grid.forEachPairInBuckets(static_cast<std::size_t>(first), last,
+                                      [&](std::uint32_t a, std::uint32_t b) {
+                                          if (auto pair = test(a, b)) found.push_back(*pair);
+                                      });
+        }
+    }
+    std::vector<Found> all;
+    for (const auto& found : perThread) all.insert(all.end(), found.begin(), found.end());
+    return all;
+}
 
 } // namespace slides

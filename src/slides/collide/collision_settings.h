@@ -3,13 +3,16 @@
 //     collisions
 //     {
 //         model       impulse;     // none | impulse (collide-and-stream, Eq. 2.34–2.58)
+//                                  // | softSphere (Hertz–Mindlin forces, Eq. 2.4–2.14)
 //         restitution { model velocityDependent; yieldPressureFactor 3; }
 //         friction    { static 0.3; dynamic 0.3; }
+//         softSphereCoeffs { damping restitution; neighbourSkin 0.2; }
 //     }
 //     surfaces { target { type plane; ... interaction deposit; } }   // absorb | rebound | deposit
 //
-// How to add a model: an enumerator, its name in the table, its case where ParticleCollisions
-// resolves a contact (collide/particle_collisions.cpp).
+// How to add a model: an enumerator, its name in the table, and the stage of the stepper that
+// resolves its contacts (integrate/stepper.cpp: ParticleCollisions for impulses,
+// SoftSphereCollisions for forces).
 #pragma once
 
 #include "slides/collide/impulse.h"
@@ -20,16 +23,39 @@
 
 namespace slides {
 
-enum class CollisionModel { none, impulse };
+enum class CollisionModel { none, impulse, softSphere };
 
 struct CollisionModelName {
     CollisionModel value;
     std::string_view name;
 };
 
-constexpr std::array<CollisionModelName, 2> collisionModelNames() {
-    return {{{CollisionModel::none, "none"}, {CollisionModel::impulse, "impulse"}}};
+constexpr std::array<CollisionModelName, 3> collisionModelNames() {
+    return {{{CollisionModel::none, "none"},
+             {CollisionModel::impulse, "impulse"},
+             {CollisionModel::softSphere, "softSphere"}}};
 }
+
+/// How a soft-sphere contact's damping ratio β follows from the restitution coefficient.
+enum class SoftSphereDamping {
+    restitution, ///< β solved so that a Hertz impact restitutes exactly e (softContactLaw)
+    tsuji        ///< β = ln e/√(ln²e + π²), LIGGGHTS' choice (restitutes a little more)
+};
+
+struct SoftSphereDampingName {
+    SoftSphereDamping value;
+    std::string_view name;
+};
+
+constexpr std::array<SoftSphereDampingName, 2> softSphereDampingNames() {
+    return {{{SoftSphereDamping::restitution, "restitution"}, {SoftSphereDamping::tsuji, "tsuji"}}};
+}
+
+/// The soft-sphere model's settings (collide/soft_sphere_collisions.h).
+struct SoftSphereSettings {
+    SoftSphereDamping damping = SoftSphereDamping::restitution;
+    double neighbourSkin = 0.2; ///< Verlet-list skin per largest particle radius
+};
 
 /// What a surface does to a particle that reaches it.
 enum class SurfaceInteraction {
@@ -54,6 +80,15 @@ struct CollisionSettings {
     CollisionModel model = CollisionModel::none; ///< particle–particle collisions
     RestitutionSettings restitution;
     FrictionSettings friction;
+    SoftSphereSettings softSphere;
 };
+
+/// Whether a surface of this interaction meets particles by soft-sphere forces (a rebound wall
+/// under the softSphere model) rather than by the impulse law at the touch.
+inline bool meetsBySoftContact(const CollisionSettings& collisions,
+                               SurfaceInteraction interaction) {
+    return collisions.model == CollisionModel::softSphere &&
+           interaction == SurfaceInteraction::rebound;
+}
 
 } // namespace slides

@@ -7,10 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <optional>
 
 namespace slides {
 
@@ -30,36 +27,12 @@ void ParticleCollisions::findContacts(const ParticleCloud& cloud,
     // at most that plus |s − ½| |Δd| ≤ d_max further: cells of 2 R_max + d_max hold every pair.
     grid_.build(midpoints_, 2 * largestRadius + longestChord);
 
-    // Each thread keeps the contacts of its own block of buckets; the order of the joined list
-    // does not matter, as it is sorted below.
-    const auto buckets = static_cast<std::ptrdiff_t>(grid_.bucketCount());
-    constexpr std::ptrdiff_t chunk = 4096;
-    std::vector<std::vector<ParticleContact>> perThread;
-#pragma omp parallel
-    {
-#ifdef _OPENMP
-#pragma omp single
-        perThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
-        auto& found = perThread[static_cast<std::size_t>(omp_get_thread_num())];
-#else
-        perThread.resize(1);
-        auto& found = perThread[0];
-#endif
-#pragma omp for schedule(static)
-        for (std::ptrdiff_t first = 0; first < buckets; first += chunk) {
-            const auto last = static_cast<std::size_t>(std::min(first + chunk, buckets));
-            grid_.forEachPairInBuckets(
-                static_cast<std::size_t>(first), last, [&](std::uint32_t a, std::uint32_t b) {
-                    const auto fraction = sweptContactFraction(
-                        startPositions[a] - startPositions[b],
-                        cloud.position[a] - cloud.position[b], cloud.radius[a] + cloud.radius[b]);
-                    if (fraction) found.push_back({a, b, *fraction});
-                });
-        }
-    }
-    contacts_.clear();
-    for (const auto& found : perThread)
-        contacts_.insert(contacts_.end(), found.begin(), found.end());
+    contacts_ = collectPairs<ParticleContact>(grid_, [&](std::uint32_t a, std::uint32_t b) {
+        const auto fraction = sweptContactFraction(startPositions[a] - startPositions[b],
+                                                   cloud.position[a] - cloud.position[b],
+                                                   cloud.radius[a] + cloud.radius[b]);
+        return fraction ? std::optional<ParticleContact>({a, b, *fraction}) : std::nullopt;
+    });
     // Earliest touch first; ties by particle id, which, unlike an index, a run never reorders.
     const auto key = [&](const ParticleContact& c) {
         const ParticleId first = cloud.id[c.a], second = cloud.id[c.b];

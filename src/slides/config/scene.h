@@ -38,7 +38,7 @@ struct FluidSettings {
     double specificHeat = 0;        ///< c_f [J/(kg K)], heat transfer
 };
 
-enum class CarrierType { analyticJet, roundLaminarJet, foamField };
+enum class CarrierType { analyticJet, roundLaminarJet, foamField, none };
 
 struct CarrierSettings {
     CarrierType type = CarrierType::analyticJet;
@@ -78,13 +78,18 @@ struct ParticleSettings {
     double injectionTemperature = 0; ///< θ at injection [K], heat transfer
 };
 
-enum class InjectionMode { rate, allAtStart };
+enum class InjectionMode { rate, allAtStart, lattice };
 
 struct InjectionSettings {
     InjectionMode mode = InjectionMode::rate;
     double rate = 0;           ///< particles per second (mode rate)
     double crossSpanSpeed = 0; ///< magnitude of the random velocity ⟂ axis [m/s]
     std::uint64_t seed = 1;
+    // Mode lattice: a simple cubic lattice of sites, filled in order x, y, z.
+    Vec3 latticeOrigin = Vec3::Zero(); ///< lower corner of the first cell [m]
+    double latticeSpacing = 0;         ///< a [m]
+    std::array<int, 3> latticeSites{}; ///< per axis
+    double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
 };
 
 struct PhysicsSettings {

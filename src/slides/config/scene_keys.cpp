@@ -37,10 +37,11 @@ std::vector<KeyDeclaration> declareKeys() {
     // clang-format off
     std::vector<KeyDeclaration> keys = {
         {"carrier", K::dictionary, "-", "", {}, R::any, "The carrier gas field."},
-        {"carrier.type", K::word, "-", "analyticJet", {"analyticJet", "roundLaminarJet", "foamField"},
-         R::any,
+        {"carrier.type", K::word, "-", "analyticJet",
+         {"analyticJet", "roundLaminarJet", "foamField", "none"}, R::any,
          "analyticJet: sech² jet of Eq. 5.10/5.11; roundLaminarJet: Schlichting's exact round "
-         "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present)."},
+         "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present); "
+         "none: no gas (a DEM scene: gravity and contacts only, time.dt given)."},
         {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
         {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
@@ -92,9 +93,10 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.turbulence.lengthScaleToHalfWidth", K::scalar, "-", "-", {}, R::positive,
          "ℓ over the local jet half-width (scaling jetLocal)."},
 
-        {"fluid", K::dictionary, "-", "", {}, R::any, "Carrier gas properties."},
-        {"fluid.density", K::scalar, "kg/m^3", "", {}, R::positive, "Gas density ρf."},
-        {"fluid.kinematicViscosity", K::scalar, "m^2/s", "", {}, R::positive,
+        {"fluid", K::dictionary, "-", "-", {}, R::any,
+         "Carrier gas properties (required unless carrier.type is none)."},
+        {"fluid.density", K::scalar, "kg/m^3", "-", {}, R::positive, "Gas density ρf."},
+        {"fluid.kinematicViscosity", K::scalar, "m^2/s", "-", {}, R::positive,
          "Gas kinematic viscosity ν."},
         {"fluid.temperature", K::scalar, "K", "293.15", {}, R::positive, "Gas temperature."},
         {"fluid.thermalConductivity", K::scalar, "W/(m K)", "0.0257", {}, R::positive,
@@ -102,11 +104,13 @@ std::vector<KeyDeclaration> declareKeys() {
         {"fluid.specificHeat", K::scalar, "J/(kg K)", "1005", {}, R::positive,
          "Gas specific heat c_f, for the Prandtl number (default: air)."},
 
-        {"nozzle", K::dictionary, "-", "", {}, R::any, "The nozzle the gas and particles leave."},
+        {"nozzle", K::dictionary, "-", "-", {}, R::any,
+         "The nozzle the gas and particles leave (required unless carrier.type is none and "
+         "injection.mode lattice)."},
         {"nozzle.centre", K::vector, "m", "(0 0 0)", {}, R::any, "Centre of the nozzle exit."},
         {"nozzle.axis", K::vector, "-", "(1 0 0)", {}, R::any,
          "Jet direction (normalised on reading)."},
-        {"nozzle.radius", K::scalar, "m", "", {}, R::positive,
+        {"nozzle.radius", K::scalar, "m", "-", {}, R::positive,
          "Nozzle radius (half-width of a planar slot)."},
         {"nozzle.crossSpanDirection", K::vector, "-", "(0 1 0)", {}, R::any,
          "Cross-span direction y of a planar jet; its part along the axis is removed."},
@@ -156,14 +160,26 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injection", K::dictionary, "-", "", {}, R::any,
          "Particles start on the nozzle disc with the local gas velocity plus a random "
          "cross-span velocity."},
-        {"injection.mode", K::word, "-", "rate", {"rate", "allAtStart"}, R::any,
-         "rate: one particle every 1/rate seconds; allAtStart: all at t = 0."},
+        {"injection.mode", K::word, "-", "rate", {"rate", "allAtStart", "lattice"}, R::any,
+         "rate: one particle every 1/rate seconds; allAtStart: all at t = 0; lattice: all at "
+         "t = 0 on the sites of a simple cubic lattice (latticeCoeffs)."},
         {"injection.rate", K::scalar, "1/s", "-", {}, R::positive,
          "Particles injected per second (mode rate)."},
         {"injection.crossSpanSpeed", K::scalar, "m/s", "0", {}, R::nonNegative,
          "Magnitude of the random velocity perpendicular to the axis, random direction."},
         {"injection.seed", K::integer, "-", "1", {}, R::nonNegative,
          "Seed of the counter-based random numbers."},
+        {"injection.latticeCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Injection mode lattice: particle k on site (i, j, l), k = i + n_x (j + n_y l), at "
+         "origin + ((i + ½) a, (j + ½) a, (l + ½) a)."},
+        {"injection.latticeCoeffs.origin", K::vector, "m", "(0 0 0)", {}, R::any,
+         "Lower corner of the lattice's first cell."},
+        {"injection.latticeCoeffs.spacing", K::scalar, "m", "", {}, R::positive,
+         "Lattice spacing a."},
+        {"injection.latticeCoeffs.sites", K::integerTriple, "-", "", {}, R::atLeastOne,
+         "Sites per axis (n_x n_y n_z); particles.count must not exceed their product."},
+        {"injection.latticeCoeffs.velocitySpread", K::scalar, "m/s", "0", {}, R::nonNegative,
+         "Each velocity component gets a uniform random addition in [−spread, spread]."},
 
         {"physics", K::dictionary, "-", "-", {}, R::any, "Forces on the particles."},
         {"physics.drag", K::word, "-", "haiderLevenspiel", namesOf(dragModelNames()), R::any,
@@ -225,8 +241,9 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions", K::dictionary, "-", "-", {}, R::any,
          "Contacts between particles, and the laws of every impulse contact (collide/)."},
         {"collisions.model", K::word, "-", "auto", namesOrAuto(collisionModelNames()), R::any,
-         "Particle–particle collisions: none, impulse (collide-and-stream, Eq. 2.34–2.58), or "
-         "auto: impulse where the scene analysis expects collisions."},
+         "Particle–particle collisions: none, impulse (collide-and-stream, Eq. 2.34–2.58), "
+         "softSphere (Hertz–Mindlin forces, Eq. 2.4–2.14; rebound surfaces become soft walls), "
+         "or auto: impulse where the scene analysis expects collisions."},
         {"collisions.restitution", K::dictionary, "-", "-", {}, R::any,
          "Restitution of impulse contacts (physics/restitution.h)."},
         {"collisions.restitution.model", K::word, "-", "velocityDependent",
@@ -242,7 +259,17 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions.friction.static", K::scalar, "-", "0.3", {}, R::nonNegative,
          "μ_s: the contact sticks while the stick impulse is below μ_s times the normal one."},
         {"collisions.friction.dynamic", K::scalar, "-", "0.3", {}, R::nonNegative,
-         "μ_d: tangential impulse of a slipping contact per normal impulse."},
+         "μ_d: tangential impulse of a slipping contact per normal impulse; the Coulomb limit "
+         "μ of softSphere contacts."},
+        {"collisions.softSphereCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "The softSphere model (collide/soft_sphere_collisions.h); its damping follows from "
+         "restitution.coefficient, which must then be constant."},
+        {"collisions.softSphereCoeffs.damping", K::word, "-", "restitution",
+         namesOf(softSphereDampingNames()), R::any,
+         "restitution: Hertz impacts restitute exactly e; tsuji: LIGGGHTS' β = ln e/√(ln²e + π²)."},
+        {"collisions.softSphereCoeffs.neighbourSkin", K::scalar, "-", "0.2", {}, R::nonNegative,
+         "Verlet-list skin per largest particle radius: the list is rebuilt when a particle has "
+         "moved half of it (0: every step)."},
 
         {"deposition", K::dictionary, "-", "-", {}, R::any,
          "Adhesion on surfaces whose interaction is deposit, and on their deposit (Eq. 5.7–5.9)."},

@@ -381,6 +381,22 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     restitution.yieldPressureFactor = keys.scalar("collisions.restitution.yieldPressureFactor");
     collisions.friction.staticCoefficient = keys.scalar("collisions.friction.static");
     collisions.friction.dynamicCoefficient = keys.scalar("collisions.friction.dynamic");
+    if (collisions.model == CollisionModel::softSphere) {
+        // The damped Hertz impact restitutes one e whatever the speed (physics/soft_contact.h).
+        if (keys.has("collisions.restitution.model") &&
+            restitution.model != RestitutionModel::constant)
+            keys.fail("collisions.restitution.model",
+                      "must be constant for collisions.model softSphere, whose damping restitutes "
+                      "one coefficient at every impact speed");
+        restitution.model = RestitutionModel::constant;
+        if (!(restitution.coefficient > 0))
+            keys.fail("collisions.restitution.coefficient",
+                      "must be positive for collisions.model softSphere");
+        collisions.softSphere.damping =
+            *valueNamed(softSphereDampingNames(), keys.word("collisions.softSphereCoeffs.damping"));
+        collisions.softSphere.neighbourSkin =
+            keys.scalar("collisions.softSphereCoeffs.neighbourSkin");
+    }
 
     AdhesionSettings& adhesion = scene.deposition;
     adhesion.model = *valueNamed(adhesionModelNames(), keys.word("deposition.adhesion"));
@@ -401,11 +417,15 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
                 unavailable = std::string("needs particles.material.") + property;
         scene.physics.automaticTerms.push_back({PhysicsTerm::collisions, unavailable});
     }
+    // Hertz forces (softSphere) and the velocity-dependent restitution read the moduli.
+    const bool softSphere = collisions.model == CollisionModel::softSphere;
+    const std::string moduliReader =
+        softSphere ? " (collisions.model softSphere)" : " (restitution velocityDependent)";
     const auto requireMaterial = [&](const std::string& base, bool needsYield,
                                      const std::string& because) {
-        if (velocityDependent) {
-            keys.require(base + ".bulkModulus", because + " (restitution velocityDependent)");
-            keys.require(base + ".shearModulus", because + " (restitution velocityDependent)");
+        if (velocityDependent || softSphere) {
+            keys.require(base + ".bulkModulus", because + moduliReader);
+            keys.require(base + ".shearModulus", because + moduliReader);
         }
         if (needsYield) keys.require(base + ".yieldStress", because);
     };
@@ -438,9 +458,26 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     }
 }
 
+/// Without a gas, every term but collisions is off: one switched on is an error, and auto
+/// stays off (the analysis has no gas to trace).
+void refuseGasTerms(const KeyReader& keys, Scene& scene) {
+    for (const PhysicsTermName& row : physicsTermNames()) {
+        if (row.value == PhysicsTerm::collisions) continue;
+        if (termIsOn(scene, row.value))
+            keys.fail(std::string(row.key), "needs a carrier gas, and carrier.type is none");
+    }
+    for (AutomaticTerm& automatic : scene.physics.automaticTerms)
+        if (automatic.term != PhysicsTerm::collisions && automatic.unavailable.empty())
+            automatic.unavailable = "needs a carrier gas";
+}
+
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     CarrierSettings carrier;
     const std::string type = keys.word("carrier.type");
+    if (type == "none") {
+        carrier.type = CarrierType::none;
+        return carrier;
+    }
     const std::string coeffs = "carrier." + type + "Coeffs";
     if (type != "foamField") keys.require(coeffs, "for carrier type " + type);
     if (type == "foamField") {
@@ -510,18 +547,27 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.caseDirectory = caseDirectory;
     scene.dictionaryFile = dictionary.file();
 
-    scene.fluid.density = keys.scalar("fluid.density");
-    scene.fluid.kinematicViscosity = keys.scalar("fluid.kinematicViscosity");
+    // Without a gas (carrier none) there is no fluid, and a lattice start needs no nozzle.
+    const bool withGas = keys.word("carrier.type") != "none";
+    if (withGas) {
+        keys.require("fluid.density", "for a carrier gas");
+        keys.require("fluid.kinematicViscosity", "for a carrier gas");
+        scene.fluid.density = keys.scalar("fluid.density");
+        scene.fluid.kinematicViscosity = keys.scalar("fluid.kinematicViscosity");
+    }
     scene.fluid.temperature = keys.scalar("fluid.temperature");
 
-    scene.nozzle.centre = keys.vector("nozzle.centre");
-    scene.nozzle.axis = keys.direction("nozzle.axis");
-    scene.nozzle.radius = keys.scalar("nozzle.radius");
-    const Vec3 crossSpan = keys.vector("nozzle.crossSpanDirection");
-    const Vec3 perpendicular = crossSpan - crossSpan.dot(scene.nozzle.axis) * scene.nozzle.axis;
-    if (!(perpendicular.norm() > 1e-6 * crossSpan.norm()))
-        keys.fail("nozzle.crossSpanDirection", "must not be parallel to nozzle.axis");
-    scene.nozzle.crossSpanDirection = perpendicular.normalized();
+    if (withGas || keys.word("injection.mode") != "lattice") {
+        keys.require("nozzle.radius", withGas ? "for a carrier gas" : "to inject on the nozzle");
+        scene.nozzle.centre = keys.vector("nozzle.centre");
+        scene.nozzle.axis = keys.direction("nozzle.axis");
+        scene.nozzle.radius = keys.scalar("nozzle.radius");
+        const Vec3 crossSpan = keys.vector("nozzle.crossSpanDirection");
+        const Vec3 perpendicular = crossSpan - crossSpan.dot(scene.nozzle.axis) * scene.nozzle.axis;
+        if (!(perpendicular.norm() > 1e-6 * crossSpan.norm()))
+            keys.fail("nozzle.crossSpanDirection", "must not be parallel to nozzle.axis");
+        scene.nozzle.crossSpanDirection = perpendicular.normalized();
+    }
 
     scene.carrier = readCarrier(keys, scene.fluid);
 
@@ -530,11 +576,25 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.particles.radius = readRadiusDistribution(keys);
     scene.particles.material = readMaterial(keys, "particles.material");
 
-    scene.injection.mode =
-        keys.word("injection.mode") == "rate" ? InjectionMode::rate : InjectionMode::allAtStart;
+    const std::string mode = keys.word("injection.mode");
+    scene.injection.mode = mode == "rate"         ? InjectionMode::rate
+                           : mode == "allAtStart" ? InjectionMode::allAtStart
+                                                  : InjectionMode::lattice;
     if (scene.injection.mode == InjectionMode::rate) {
         keys.require("injection.rate", "for injection mode rate");
         scene.injection.rate = keys.scalar("injection.rate");
+    }
+    if (scene.injection.mode == InjectionMode::lattice) {
+        const std::string lattice = "injection.latticeCoeffs";
+        keys.require(lattice, "for injection mode lattice");
+        scene.injection.latticeOrigin = keys.vector(lattice + ".origin");
+        scene.injection.latticeSpacing = keys.scalar(lattice + ".spacing");
+        scene.injection.latticeSites = keys.integerTriple(lattice + ".sites");
+        scene.injection.latticeVelocitySpread = keys.scalar(lattice + ".velocitySpread");
+        const auto& sites = scene.injection.latticeSites;
+        if (static_cast<double>(scene.particles.count) >
+            static_cast<double>(sites[0]) * sites[1] * sites[2])
+            keys.fail(lattice + ".sites", "hold fewer sites than particles.count");
     }
     scene.injection.crossSpanSpeed = keys.scalar("injection.crossSpanSpeed");
     scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
@@ -552,6 +612,8 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
                   "cannot yet be combined with the unsteady forces (history, addedMass, "
                   "pressureGradient, lift, spin)");
 
+    if (scene.carrier.type == CarrierType::none)
+        keys.require("time.dt", "for carrier type none (no gas for the scene analysis)");
     scene.time.dt = keys.optionalScalar("time.dt").value_or(0);
     scene.time.endTime = keys.scalar("time.endTime");
     if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
@@ -572,6 +634,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         scene.surfaces.push_back(plane);
     }
     readCollisionsAndDeposition(keys, scene);
+    if (scene.carrier.type == CarrierType::none) refuseGasTerms(keys, scene);
 
     scene.domainFromCarrier = !keys.has("domain");
     if (scene.carrier.type != CarrierType::foamField)

@@ -35,6 +35,9 @@ struct ParticleCloud {
     std::vector<EddyState> eddy;       ///< turbulent dispersion (physics/dispersion.h)
     std::vector<double> temperature;   ///< θ [K], heat transfer (physics/heat_transfer.h)
     std::vector<Vec3> angularVelocity; ///< ω [rad/s], spin (physics/spin.h) or collisions
+    /// Soft-sphere contact load at the end of the last step (collide/soft_sphere_collisions.h).
+    std::vector<Vec3> contactForce;  ///< [N]
+    std::vector<Vec3> contactTorque; ///< [N m]
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -58,6 +61,8 @@ struct ParticleCloud {
         visit("eddy", cloud.eddy);
         visit("temperature", cloud.temperature);
         visit("angularVelocity", cloud.angularVelocity);
+        visit("contactForce", cloud.contactForce);
+        visit("contactTorque", cloud.contactTorque);
     }
 };
 

@@ -22,6 +22,14 @@ double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, Pa
     }
 }
 
+Vec3 latticeSite(const InjectionSettings& injection, ParticleId id) {
+    const auto& sites = injection.latticeSites;
+    const auto nx = static_cast<ParticleId>(sites[0]), ny = static_cast<ParticleId>(sites[1]);
+    const Vec3 cell(static_cast<double>(id % nx), static_cast<double>(id / nx % ny),
+                    static_cast<double>(id / (nx * ny)));
+    return injection.latticeOrigin + injection.latticeSpacing * (cell.array() + 0.5).matrix();
+}
+
 Injector::Injector(const Scene& scene) : scene_(scene) {}
 
 double Injector::injectionTime(ParticleId id) const {
@@ -43,22 +51,29 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     const Vec3 other = nozzle.axis.cross(across);
     const auto count = static_cast<std::size_t>(last - first);
     positions_.resize(count);
-    crossSpanVelocities_.resize(count);
+    randomVelocities_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
         const auto id = static_cast<ParticleId>(first) + k;
         RandomStream random(scene_.injection.seed, id, RandomPurpose::injection);
+        if (scene_.injection.mode == InjectionMode::lattice) {
+            positions_[k] = latticeSite(scene_.injection, id);
+            const double spread = scene_.injection.latticeVelocitySpread;
+            for (int axis = 0; axis < 3; ++axis)
+                randomVelocities_[k][axis] = spread * (2 * random.uniform() - 1);
+            continue;
+        }
         const double radialFraction = std::sqrt(random.uniform()); // uniform in disc area
         const double angle = 2.0 * std::numbers::pi * random.uniform();
         const double direction = 2.0 * std::numbers::pi * random.uniform();
         positions_[k] = nozzle.centre + nozzle.radius * radialFraction *
                                             (std::cos(angle) * across + std::sin(angle) * other);
-        crossSpanVelocities_[k] = scene_.injection.crossSpanSpeed *
-                                  (std::cos(direction) * across + std::sin(direction) * other);
+        randomVelocities_[k] = scene_.injection.crossSpanSpeed *
+                               (std::cos(direction) * across + std::sin(direction) * other);
     }
     carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     for (std::size_t k = 0; k < count; ++k) {
         const auto id = static_cast<ParticleId>(first) + k;
-        cloud.add(id, positions_[k], gas_.velocity[k] + crossSpanVelocities_[k],
+        cloud.add(id, positions_[k], gas_.velocity[k] + randomVelocities_[k],
                   drawRadius(scene_.particles.radius, scene_.injection.seed, id));
     }
     injected_ = last;

@@ -1,5 +1,7 @@
 // Injector: puts particles on the nozzle disc with the local gas velocity plus a random
-// cross-span velocity, at a given rate or all at the start.
+// cross-span velocity, at a given rate or all at the start; or, in mode lattice, all at the
+// start on the sites of a simple cubic lattice, with the gas velocity plus a random one uniform
+// in [−spread, spread] per component.
 //
 // Particle k (id k) is injected at t_k = k / rate (or t = 0). Its radius, position on the disc
 // (uniform in area) and cross-span direction come from counter-based random streams keyed by
@@ -15,6 +17,9 @@
 #include "slides/core/particle_cloud.h"
 
 namespace slides {
+
+/// Where particle id starts in injection mode lattice: its site's centre.
+Vec3 latticeSite(const InjectionSettings& injection, ParticleId id);
 
 /// A radius drawn from the distribution for particle id (truncated by redrawing).
 double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, ParticleId id);
@@ -38,7 +43,7 @@ private:
     const Scene& scene_;
     long injected_ = 0;
     std::vector<Vec3> positions_;
-    std::vector<Vec3> crossSpanVelocities_;
+    std::vector<Vec3> randomVelocities_; ///< the random part of each start velocity
     CarrierSample gas_;
 };
 

@@ -29,8 +29,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
         maxeyRiley_.emplace(scene);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
-    if (scene.collisions.model != CollisionModel::none) collisions_.emplace(scene);
-    tracksSpin_ = scene.physics.spin || collisions_ ||
+    if (scene.collisions.model == CollisionModel::impulse) collisions_.emplace(scene);
+    if (scene.collisions.model == CollisionModel::softSphere) softSpheres_.emplace(scene);
+    tracksSpin_ = scene.physics.spin || collisions_ || softSpheres_ ||
                   std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const auto& s) {
                       return s.interaction != SurfaceInteraction::absorb;
                   });
@@ -43,13 +44,18 @@ bool Stepper::finished() const {
     return scene_.time.stopWhenAllDone && injector_.finished() && cloud_.empty();
 }
 
+long Stepper::collisions() const {
+    if (collisions_) return collisions_->collisions();
+    return softSpheres_ ? softSpheres_->collisions() : 0;
+}
+
 StepperCounters Stepper::counters() const {
     return {time_,          steps_,          injector_.injected(), escaped_,
             particleSteps_, escapedThrough_, collisions(),         surfaces_.rebounds()};
 }
 
 void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
-                     std::vector<Arrival> arrivals) {
+                     std::vector<Arrival> arrivals, std::vector<ContactSpring> springs) {
     time_ = counters.time;
     steps_ = counters.steps;
     escaped_ = counters.escaped;
@@ -57,6 +63,7 @@ void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
     particleSteps_ = counters.particleSteps;
     injector_.resumeAfter(counters.injected);
     if (collisions_) collisions_->resume(counters.collisions);
+    if (softSpheres_) softSpheres_->resume(counters.collisions, std::move(springs));
     surfaces_.resumeRebounds(counters.rebounds);
     if (cloud.stateWidth != cloud_.stateWidth)
         throw std::logic_error("checkpoint's model state does not fit the scene's models");
@@ -91,6 +98,11 @@ void Stepper::step() {
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     particleSteps_ += cloud_.size();
+    if (softSpheres_) {
+        cloud_.contactForce.resize(cloud_.size(), Vec3::Zero());
+        cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
+        softSpheres_->halfKick(cloud_, stepLengths_);
+    }
     startPositions_ = cloud_.position;
     startVelocities_ = cloud_.velocity;
     advance(h);
@@ -100,6 +112,13 @@ void Stepper::step() {
     }
     heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
     if (collisions_) collisions_->collide(cloud_, startPositions_, stepLengths_);
+    if (softSpheres_) {
+        softSpheres_->updateLoads(cloud_, h);
+        softSpheres_->halfKick(cloud_, stepLengths_);
+        const auto& wallContacts = softSpheres_->newWallContacts();
+        for (std::size_t s = 0; s < wallContacts.size(); ++s)
+            surfaces_.countRebounds(s, wallContacts[s]);
+    }
     meetSurfaces(h);
     time_ += h;
     ++steps_;
@@ -131,6 +150,7 @@ constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); }
 
 void Stepper::advance(double h) {
     if (maxeyRiley_) return maxeyRiley_->advance(cloud_, carrier_, time_, stepLengths_);
+    if (scene_.carrier.type == CarrierType::none) return flyBallistically();
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
@@ -161,6 +181,17 @@ void Stepper::advance(double h) {
                     stepLengths_, 1.0);
         break;
     }
+    }
+}
+
+void Stepper::flyBallistically() {
+    const Vec3& a = bodyAcceleration_;
+    const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const double h = stepLengths_[i];
+        cloud_.position[i] += (cloud_.velocity[i] + 0.5 * h * a) * h; // exact for constant a
+        cloud_.velocity[i] += h * a;
     }
 }
 

@@ -9,14 +9,19 @@
 //   2b. with turbulent dispersion, the gas velocity each particle sees gets its time-averaged
 //      eddy fluctuation over the step (integrate/turbulent_dispersion.h);
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
-//      (physics/drag.h) and gravity with buoyancy (physics/body_force.h); exponentialMidpoint
+//      (physics/drag.h) and gravity with buoyancy (physics/body_force.h) — without gas
+//      (carrier none) by gravity alone, exactly; exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
 //      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator;
 //   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
 //      (integrate/particle_heating.h);
 //   3c. with particle collisions on, contacts between particles during the step are resolved
-//      by impulses (collide/particle_collisions.h);
+//      by impulses (collide/particle_collisions.h); with soft spheres
+//      (collide/soft_sphere_collisions.h) instead, the contact loads kick each particle's
+//      velocity and spin by half a step before 3 and, computed anew at the step's end, after
+//      it: velocity Verlet with the stream step as its drift (second order, symplectic
+//      without a gas);
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
 //      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
@@ -27,6 +32,7 @@
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/collide/particle_collisions.h"
+#include "slides/collide/soft_sphere_collisions.h"
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injector.h"
@@ -78,17 +84,23 @@ public:
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
     const SurfaceImpacts& surfaceImpacts() const { return surfaces_; }
-    /// Particle–particle contacts resolved so far (0 without collisions).
-    long collisions() const { return collisions_ ? collisions_->collisions() : 0; }
+    /// Particle–particle contacts resolved (impulses) or begun (soft spheres) so far.
+    long collisions() const;
+    /// The soft-sphere contacts, when collisions.model is softSphere.
+    const SoftSphereCollisions* softSpheres() const {
+        return softSpheres_ ? &*softSpheres_ : nullptr;
+    }
 
     StepperCounters counters() const;
     /// Continues from a checkpoint's state: every later step is bit for bit the one the
     /// stepper that wrote the checkpoint would have taken.
-    void resume(const StepperCounters& counters, ParticleCloud cloud,
-                std::vector<Arrival> arrivals);
+    void resume(const StepperCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
+                std::vector<ContactSpring> springs = {});
 
 private:
     void advance(double h);
+    /// The stream step without gas (carrier none): gravity only, exactly.
+    void flyBallistically();
     void meetSurfaces(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
     std::size_t exitOf(std::size_t i) const;
@@ -113,8 +125,9 @@ private:
     long escaped_ = 0;
     std::vector<std::uint64_t> escapedThrough_;
     std::uint64_t particleSteps_ = 0;
-    std::optional<MaxeyRileyStepper> maxeyRiley_;  ///< when an unsteady term is on
-    std::optional<ParticleCollisions> collisions_; ///< when collisions.model is not none
+    std::optional<MaxeyRileyStepper> maxeyRiley_;     ///< when an unsteady term is on
+    std::optional<ParticleCollisions> collisions_;    ///< when collisions.model is impulse
+    std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
 

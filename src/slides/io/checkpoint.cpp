@@ -111,6 +111,18 @@ struct ArrivalColumns {
     }
 };
 
+/// The soft-sphere contacts' springs as columns (SoftSphereCollisions::springs).
+struct SpringColumns {
+    std::vector<std::uint64_t> first, second;
+    std::vector<Vec3> displacement;
+
+    template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
+        visit("first", c.first);
+        visit("second", c.second);
+        visit("displacement", c.displacement);
+    }
+};
+
 void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& output,
                 double nextFrameTime, const RunFingerprint& fingerprint) {
     const Hdf5Handle checkpoint = file.createGroup(group);
@@ -151,6 +163,18 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     ArrivalColumns::forEach(arrivals, [&](const char* name, const auto& array) {
         writeColumn(file, arrived.get(), name, array);
     });
+    if (const SoftSphereCollisions* softSpheres = stepper.softSpheres()) {
+        SpringColumns springs;
+        for (const ContactSpring& spring : softSpheres->springs()) {
+            springs.first.push_back(spring.first);
+            springs.second.push_back(spring.second);
+            springs.displacement.push_back(spring.displacement);
+        }
+        const Hdf5Handle contacts = file.createGroup(std::string(group) + "/springs");
+        SpringColumns::forEach(springs, [&](const char* name, const auto& array) {
+            writeColumn(file, contacts.get(), name, array);
+        });
+    }
     std::vector<double> frameTimes;
     std::vector<std::uint64_t> frameCounts;
     for (const auto& frame : output.frames()) {
@@ -213,6 +237,17 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
         state.arrivals.push_back({arrivals.id[i], arrivals.surface.at(i), arrivals.time.at(i),
                                   arrivals.position.at(i), arrivals.velocity.at(i),
                                   arrivals.radius.at(i), arrivals.temperature.at(i)});
+    if (file.exists(g + "/springs")) {
+        SpringColumns springs;
+        SpringColumns::forEach(springs, [&](const char* name, auto& array) {
+            readColumn(file, g + "/springs/" + name, array);
+        });
+        if (springs.second.size() != springs.first.size() ||
+            springs.displacement.size() != springs.first.size())
+            refuse(file.path(), "damaged: contact spring columns differ in length");
+        for (std::size_t i = 0; i < springs.first.size(); ++i)
+            state.springs.push_back({springs.first[i], springs.second[i], springs.displacement[i]});
+    }
     const auto frameTimes = file.readDoubles(g + "/frameTimes", 1);
     const auto frameCounts = file.readUInt64(g + "/frameCounts");
     if (frameTimes.size() != frameCounts.size()) refuse(file.path(), "damaged: frame lists differ");

@@ -41,6 +41,7 @@ struct RunState {
     StepperCounters counters;
     ParticleCloud cloud;
     std::vector<Arrival> arrivals;
+    std::vector<ContactSpring> springs; ///< of soft-sphere contacts touching
     std::vector<FrameRecord> frames;
     double nextFrameTime = 0; ///< [s]
 };

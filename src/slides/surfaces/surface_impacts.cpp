@@ -60,6 +60,7 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     Vec3 contactVelocity = Vec3::Zero();
     for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene_.surfaces[s];
+        if (meetsBySoftContact(scene_.collisions, plane.interaction)) continue;
         const auto touch = planeContactFraction(plane, path.start, x, radius);
         if (!touch || *touch >= fraction) continue;
         // A sink takes whatever touches it, as before collisions existed.

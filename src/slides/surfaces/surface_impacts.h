@@ -8,7 +8,9 @@
 //   deposit — if v_n = −v_c·n̂ is below Eq. 5.9's limit for the pair (particle–surface, or
 //             particle–deposited particle), it sticks: recorded as an arrival, added to the
 //             deposit, and leaves; otherwise it rebounds;
-//   rebound — impulse J against a rigid body (collide/impulse.h, restitution from
+//   rebound — (a soft wall under collisions.model softSphere: not met here, its contact forces
+//             act in collide/soft_sphere_collisions.h; otherwise)
+//             impulse J against a rigid body (collide/impulse.h, restitution from
 //             physics/restitution.h): v₁ += J/m, ω += r × J / I, and x₁ += (1 − s) h J/m, the
 //             rest of the step flown with the new velocity.
 // After a rebound the rest of the chord, from the contact point, is searched again (up to
@@ -61,6 +63,8 @@ public:
     const Deposit& deposit() const { return deposit_; }
     /// Rebounds off each surface (and its deposit) so far.
     const std::vector<std::uint64_t>& rebounds() const { return rebounds_; }
+    /// Adds rebounds off surface s met elsewhere (the soft walls of soft-sphere collisions).
+    void countRebounds(std::size_t s, std::uint64_t count) { rebounds_.at(s) += count; }
     /// Continues the counts of a checkpointed run (one per surface).
     void resumeRebounds(std::vector<std::uint64_t> rebounds) {
         if (rebounds.size() != rebounds_.size())

@@ -1,0 +1,208 @@
+#include "slides/collide/soft_sphere_collisions.h"
+
+#include "slides/collide/soft_sphere_pair.h"
+#include "slides/core/parallel.h"
+#include "slides/physics/contact_pair.h"
+
+#include <algorithm>
+#include <optional>
+#include <tuple>
+
+namespace slides {
+
+namespace {
+
+bool byIds(const ContactSpring& x, const ContactSpring& y) {
+    return std::tie(x.first, x.second) < std::tie(y.first, y.second);
+}
+
+double inertiaPerMass(double radius) { return 0.4 * radius * radius; } // solid sphere, I/m
+
+} // namespace
+
+SoftSphereCollisions::SoftSphereCollisions(const Scene& scene)
+    : scene_(scene), newWallContacts_(scene.surfaces.size(), 0) {
+    const double e = scene.collisions.restitution.coefficient;
+    const double friction = scene.collisions.friction.dynamicCoefficient;
+    law_ = scene.collisions.softSphere.damping == SoftSphereDamping::tsuji
+               ? SoftContactLaw{liggghtsDampingRatio(e), friction}
+               : softContactLaw(e, friction);
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+        if (meetsBySoftContact(scene.collisions, scene.surfaces[s].interaction))
+            softWalls_.push_back(s);
+}
+
+void SoftSphereCollisions::halfKick(ParticleCloud& cloud,
+                                    const std::vector<double>& stepLengths) const {
+    const double density = scene_.particles.density;
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const double half = 0.5 * stepLengths[i];
+        const double mass = sphereMass(cloud.radius[i], density);
+        cloud.velocity[i] += cloud.contactForce[i] * (half / mass);
+        cloud.angularVelocity[i] +=
+            cloud.contactTorque[i] * (half / (mass * inertiaPerMass(cloud.radius[i])));
+    }
+}
+
+bool SoftSphereCollisions::listIsStale(const ParticleCloud& cloud) const {
+    if (builtIds_ != cloud.id) return true;
+    // No pair left out of the list can touch while no particle has moved half the skin.
+    const double limit = 0.25 * skin_ * skin_;
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    bool moved = false;
+#pragma omp parallel for schedule(static) reduction(|| : moved) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i)
+        moved = moved || (cloud.position[i] - builtPositions_[i]).squaredNorm() > limit;
+    return moved;
+}
+
+void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
+    std::vector<ContactSpring> handed = springs();
+    handed.insert(handed.end(), pendingSprings_.begin(), pendingSprings_.end());
+    std::sort(handed.begin(), handed.end(), byIds);
+    pendingSprings_.clear();
+
+    const double largestRadius =
+        cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
+    skin_ = scene_.collisions.softSphere.neighbourSkin * largestRadius;
+    const double density = scene_.particles.density;
+    const MaterialSettings& material = scene_.particles.material;
+    const auto body = [&](std::uint32_t i) -> ContactBody {
+        return {sphereMass(cloud.radius[i], density), cloud.radius[i], &material};
+    };
+
+    grid_.build(cloud.position, 2 * largestRadius + skin_);
+    entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t a, std::uint32_t b) {
+        const double reach = cloud.radius[a] + cloud.radius[b] + skin_;
+        if ((cloud.position[a] - cloud.position[b]).squaredNorm() >= reach * reach)
+            return std::optional<Entry>();
+        if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
+        return std::optional<Entry>(
+            {a, static_cast<std::int32_t>(b), contactPair(body(a), body(b)), {}, false});
+    });
+    for (std::uint32_t i = 0; i < cloud.size(); ++i)
+        for (const std::size_t s : softWalls_) {
+            const PlaneSurface& wall = scene_.surfaces[s];
+            if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
+                entries_.push_back({i,
+                                    -1 - static_cast<std::int32_t>(s),
+                                    contactPair(body(i), ContactBody{.material = &wall.material}),
+                                    {},
+                                    false});
+        }
+
+    // Touching contacts keep their springs through the rebuild.
+    builtIds_ = cloud.id;
+    builtPositions_ = cloud.position;
+    for (Entry& entry : entries_) {
+        const ContactSpring key = springOf(entry);
+        const auto found = std::lower_bound(handed.begin(), handed.end(), key, byIds);
+        if (found != handed.end() && !byIds(key, *found)) {
+            entry.spring.displacement = found->displacement;
+            entry.touching = true;
+        }
+    }
+    indexEntriesByParticle();
+    ++listBuilds_;
+}
+
+void SoftSphereCollisions::indexEntriesByParticle() {
+    const std::size_t count = builtIds_.size();
+    entryStart_.assign(count + 1, 0);
+    for (const Entry& entry : entries_) {
+        ++entryStart_[entry.first + 1];
+        if (entry.second >= 0) ++entryStart_[static_cast<std::size_t>(entry.second) + 1];
+    }
+    for (std::size_t i = 0; i < count; ++i) entryStart_[i + 1] += entryStart_[i];
+    entryOf_.resize(entryStart_[count]);
+    std::vector<std::uint32_t> next(entryStart_.begin(), entryStart_.end() - 1);
+    for (std::uint32_t e = 0; e < entries_.size(); ++e) {
+        entryOf_[next[entries_[e].first]++] = 2 * e;
+        if (entries_[e].second >= 0)
+            entryOf_[next[static_cast<std::size_t>(entries_[e].second)]++] = 2 * e + 1;
+    }
+    const auto partnerId = [&](std::uint32_t slot) {
+        const ContactSpring ids = springOf(entries_[slot / 2]);
+        return slot % 2 == 1 ? ids.first : ids.second;
+    };
+    const auto particles = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (particles >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < particles; ++i)
+        std::sort(entryOf_.begin() + entryStart_[i], entryOf_.begin() + entryStart_[i + 1],
+                  [&](std::uint32_t x, std::uint32_t y) { return partnerId(x) < partnerId(y); });
+}
+
+void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
+    if (listIsStale(cloud)) buildList(cloud);
+    const auto sphere = [&](std::size_t i) -> ContactSphere {
+        return {cloud.position[i], cloud.velocity[i], cloud.angularVelocity[i], cloud.radius[i]};
+    };
+    std::fill(newWallContacts_.begin(), newWallContacts_.end(), 0);
+    loads_.resize(entries_.size());
+    long begun = 0;
+    const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
+#pragma omp parallel for schedule(static) reduction(+ : begun) if (entryCount >= minimumParallelBatch)
+    for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
+        Entry& entry = entries_[e];
+        ContactLoad& load = loads_[e];
+        if (entry.second >= 0) {
+            load =
+                sphereSphereLoad(entry.pair, law_, sphere(entry.first),
+                                 sphere(static_cast<std::size_t>(entry.second)), entry.spring, dt);
+        } else {
+            const PlaneSurface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+            load = sphereWallLoad(entry.pair, law_, sphere(entry.first), wall.point, wall.normal,
+                                  entry.spring, dt);
+        }
+        const bool touching = load.overlap > 0;
+        if (touching && !entry.touching) {
+            if (entry.second >= 0) {
+                ++begun;
+            } else {
+#pragma omp atomic
+                ++newWallContacts_[static_cast<std::size_t>(-1 - entry.second)];
+            }
+        }
+        entry.touching = touching;
+    }
+    collisions_ += begun;
+
+    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+        for (std::uint32_t k = entryStart_[i]; k < entryStart_[i + 1]; ++k) {
+            const ContactLoad& load = loads_[entryOf_[k] / 2];
+            const bool second = entryOf_[k] % 2 == 1;
+            force += second ? Vec3(-load.force) : load.force;
+            torque += second ? load.torqueOnSecond : load.torqueOnFirst;
+        }
+        cloud.contactForce[i] = force;
+        cloud.contactTorque[i] = torque;
+    }
+}
+
+ContactSpring SoftSphereCollisions::springOf(const Entry& entry) const {
+    const ParticleId second = entry.second >= 0
+                                  ? builtIds_[static_cast<std::size_t>(entry.second)]
+                                  : wallId(static_cast<std::size_t>(-1 - entry.second));
+    return {builtIds_[entry.first], second, entry.spring.displacement};
+}
+
+std::vector<ContactSpring> SoftSphereCollisions::springs() const {
+    std::vector<ContactSpring> touching;
+    for (const Entry& entry : entries_)
+        if (entry.touching) touching.push_back(springOf(entry));
+    std::sort(touching.begin(), touching.end(), byIds);
+    return touching;
+}
+
+void SoftSphereCollisions::resume(long collisions, std::vector<ContactSpring> springs) {
+    collisions_ = collisions;
+    pendingSprings_ = std::move(springs);
+    builtIds_.clear(); // the next step builds the list, handing these springs over
+}
+
+} // namespace slides
