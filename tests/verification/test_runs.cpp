@@ -282,6 +282,16 @@ const BrokenCase brokenCases[] = {
      "key 'output.fields': unknown fields 'pressure'; valid fields names are:"},
     {"nozzleOutsideDomain", "    centre      (0 0 0);", "    centre      (1 0 0);", 0,
      "key 'nozzle.centre': lies outside the domain box"},
+    {"softSphereWithVelocityDependentRestitution", "    buoyancy    on;\n}\n",
+     "    buoyancy    on;\n}\ncollisions { model softSphere; restitution { model "
+     "velocityDependent; } }\n",
+     2, "key 'collisions.restitution.model': must be constant for collisions.model softSphere"},
+    {"gasTermWithoutGas", "    dt              1e-5;",
+     "    dt              1e-5;\n}\ncarrier { type none; }\nphysics { addedMass on; }\ntime {", 3,
+     "key 'physics.addedMass': needs a carrier gas, and carrier.type is none"},
+    {"latticeOfTooFewSites", "    mode            rate;",
+     "    mode            lattice;\n    latticeCoeffs { spacing 1e-3; sites (10 10 10); }", 1,
+     "key 'injection.latticeCoeffs.sites': hold fewer sites than particles.count"},
 };
 
 INSTANTIATE_TEST_SUITE_P(BrokenCases, CommandLineRejects, ::testing::ValuesIn(brokenCases),

@@ -69,8 +69,9 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
     } else if (scene.output.hdf5) {
         hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
     }
-    writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
-                    scene.output.carrierResolution, 0.0);
+    if (scene.carrier.type != CarrierType::none) // no gas, nothing to show
+        writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
+                        scene.output.carrierResolution, 0.0);
 }
 
 std::optional<std::filesystem::path> RunOutput::hdf5File() const {
