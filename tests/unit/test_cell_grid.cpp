@@ -1,7 +1,8 @@
 // ctest-labels: collision
-// Broad phase (collide/cell_grid.h, Algorithm 4 of the reference): the hashed cell grid finds
-// exactly the pairs a brute-force O(N²) search finds, on a compact cloud and on a long thin
-// jet-like one (where a dense grid over the bounding box would be mostly empty).
+// Broad phase (collide/cell_grid.h, Algorithm 4 of the reference): the cell grid finds exactly
+// the pairs a brute-force O(N²) search finds, on a compact cloud and a short jet (one bucket per
+// cell of the bounding box) and on a long thin jet (hashed buckets, where a dense grid over the
+// bounding box would be mostly empty).
 #include "slides/collide/cell_grid.h"
 
 #include <gtest/gtest.h>
@@ -36,6 +37,7 @@ PairSet pairsCloserThan(const std::vector<Vec3>& points, double distance) {
 struct GridCase {
     const char* name;
     Vec3 extent;
+    bool dense; ///< the layout the grid should choose for 3000 points in 1 mm cells
 };
 
 class CellGridAgainstBruteForce : public ::testing::TestWithParam<GridCase> {};
@@ -45,6 +47,7 @@ TEST_P(CellGridAgainstBruteForce, FindsEveryCloserPairOnce) {
     const auto points = randomPoints(3000, GetParam().extent, 7);
     CellGrid grid;
     grid.build(points, cell);
+    EXPECT_EQ(grid.dense(), GetParam().dense);
     PairSet found, candidates;
     std::size_t visits = 0;
     grid.forEachPairInBuckets(0, grid.bucketCount(), [&](std::uint32_t i, std::uint32_t j) {
@@ -79,8 +82,9 @@ TEST_P(CellGridAgainstBruteForce, QueriesFindEveryPointWithinReach) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Clouds, CellGridAgainstBruteForce,
-                         ::testing::Values(GridCase{"compactBox", Vec3(0.01, 0.01, 0.01)},
-                                           GridCase{"longThinJet", Vec3(0.3, 0.004, 0.004)}),
+                         ::testing::Values(GridCase{"compactBox", Vec3(0.01, 0.01, 0.01), true},
+                                           GridCase{"shortJet", Vec3(0.3, 0.004, 0.004), true},
+                                           GridCase{"longThinJet", Vec3(3.0, 0.004, 0.004), false}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 } // namespace

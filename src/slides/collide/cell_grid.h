@@ -1,11 +1,13 @@
-// CellGrid: the broad phase — points binned into cubic cells by a counting sort over a hash of
-// their cell coordinates, so that only points in the same or nearby cells are compared.
+// CellGrid: the broad phase — points binned into cubic cells by a counting sort over their
+// cells' buckets, so that only points in the same or nearby cells are compared.
 //
-// Reference: Algorithm 4 and Eq. 4.36 of the reference (binning, O(N_p) contact search);
-// the hashed layout (Teschner et al. 2003, "Optimized spatial hashing for collision detection
-// of deformable objects") keeps memory at O(N) however long and thin the spray is, instead of
-// a dense 3-D array over its bounding box. Buckets are twice the number of points; a bucket
-// shared by two cells only costs a comparison of cell coordinates.
+// Reference: Algorithm 4 and Eq. 4.36 of the reference (binning, O(N_p) contact search).
+// A compact cloud (a bounding box of at most denseCellsPerPoint cells a point) gets one bucket
+// per cell of that box, in x-fastest order, so that neighbouring cells lie near in memory. A long
+// thin spray gets hashed buckets instead (Teschner et al. 2003, "Optimized spatial hashing for
+// collision detection of deformable objects"), twice the number of points: memory stays O(N)
+// however long the spray, at the price of a cache miss per neighbour cell. A bucket shared by
+// two cells only costs a comparison of cell coordinates.
 #pragma once
 
 #include "slides/core/vector.h"
@@ -31,6 +33,11 @@ public:
 
     std::size_t size() const { return cells_.size(); }
     double cellSize() const { return cellSize_; }
+    /// Whether the last build chose one bucket per cell of the bounding box (else hashed).
+    bool dense() const { return dense_; }
+
+    /// The most cells a point a dense grid may spend.
+    static constexpr std::int64_t denseCellsPerPoint = 8;
 
     /// Buckets of the grid, for splitting forEachPairInBuckets among threads.
     std::size_t bucketCount() const { return bucketStart_.size() - 1; }
@@ -105,6 +112,9 @@ private:
     }
 
     double cellSize_ = 1;
+    bool dense_ = false;
+    Cell lowestCell_{};                      ///< dense: the bounding box's first cell
+    Cell cellsPerAxis_{};                    ///< dense: the box's cells per axis
     std::vector<Cell> cells_;                ///< each point's cell
     std::vector<std::uint32_t> bucketStart_; ///< bucket b holds sorted_[start[b], start[b+1])
     std::vector<std::uint32_t> sorted_;      ///< point indices ordered by bucket

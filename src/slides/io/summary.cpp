@@ -196,6 +196,8 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
     summary["arrivals"] = arrivals;
     if (stepper.collisions() > 0 || scene.collisions.model != CollisionModel::none)
         summary["collisions"] = {{"particlePairs", stepper.collisions()}};
+    if (const SoftSphereCollisions* softSpheres = stepper.softSpheres())
+        summary["collisions"]["neighbourListBuilds"] = softSpheres->listBuilds();
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene.surfaces[s];
         if (plane.interaction == SurfaceInteraction::absorb) continue;
