@@ -81,20 +81,25 @@ double conductionResponseTime(const Scene& scene) { // Nu = 2
 }
 
 TEST_P(LumpedHeating, FollowsTheExactExponentialForAnyStep) {
-    Scene scene = heatedParticleScene();
-    const double gasTemperature = 300;
-    const double tau = conductionResponseTime(scene);
-    scene.time.dt = GetParam() * tau;
-    scene.time.endTime = 20 * tau;
-    const test::UniformTurbulentGas gas(0.0, 0.0, gasTemperature, Vec3(3, 0, 0));
-    Stepper stepper(scene, gas);
-    while (!stepper.finished()) {
-        stepper.step();
-        const double exact =
-            gasTemperature + (500 - gasTemperature) * std::exp(-stepper.time() / tau);
-        // Exact up to round-off of the time sum and exp: 1e-12 relative to the 200 K span.
-        ASSERT_NEAR(stepper.cloud().temperature.at(0), exact, 200 * 1e-12)
-            << "t = " << stepper.time() / tau << " τ_θ";
+    // Under the drag schemes, and under the Maxey–Riley step (added mass on), which heats on
+    // the same carrier sample.
+    for (const bool unsteady : {false, true}) {
+        Scene scene = heatedParticleScene();
+        scene.physics.addedMass = unsteady;
+        const double gasTemperature = 300;
+        const double tau = conductionResponseTime(scene);
+        scene.time.dt = GetParam() * tau;
+        scene.time.endTime = 20 * tau;
+        const test::UniformTurbulentGas gas(0.0, 0.0, gasTemperature, Vec3(3, 0, 0));
+        Stepper stepper(scene, gas);
+        while (!stepper.finished()) {
+            stepper.step();
+            const double exact =
+                gasTemperature + (500 - gasTemperature) * std::exp(-stepper.time() / tau);
+            // Exact up to round-off of the time sum and exp: 1e-12 relative to the 200 K span.
+            ASSERT_NEAR(stepper.cloud().temperature.at(0), exact, 200 * 1e-12)
+                << "t = " << stepper.time() / tau << " τ_θ" << (unsteady ? ", added mass" : "");
+        }
     }
 }
 

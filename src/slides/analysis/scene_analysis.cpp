@@ -1,7 +1,6 @@
 #include "slides/analysis/scene_analysis.h"
 
 #include "slides/analysis/term_estimates.h"
-#include "slides/core/error.h"
 #include "slides/core/name_table.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
@@ -555,26 +554,6 @@ SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
 
 void applyAnalysis(const SceneAnalysis& analysis, Scene& scene) {
     setAutomaticTerms(analysis.terms, scene);
-    const PhysicsSettings& physics = scene.physics;
-    if (physics.unsteadyForces() && (physics.dispersion != DispersionModel::none ||
-                                     physics.heatTransfer != HeatTransferModel::none)) {
-        std::string unsteady, other;
-        for (const TermDecision& decision : analysis.terms) {
-            if (!decision.on) continue;
-            const bool isOther = decision.term == PhysicsTerm::dispersion ||
-                                 decision.term == PhysicsTerm::heatTransfer;
-            if (decision.term == PhysicsTerm::collisions) continue;
-            std::string& list = isOther ? other : unsteady;
-            list += (list.empty() ? "" : ", ") + std::string(physicsTermRow(decision.term).name);
-        }
-        const auto automatic =
-            std::find_if(analysis.terms.begin(), analysis.terms.end(),
-                         [](const TermDecision& d) { return d.automatic && d.on; });
-        throw InputError(scene.dictionaryFile.string(), 0,
-                         std::string(physicsTermRow(automatic->term).key),
-                         "auto turns on " + unsteady + " and " + other +
-                             ", which cannot yet be combined: set one of them off");
-    }
     if (!analysis.timeStepGiven) scene.time.dt = analysis.suggestedTimeStep;
 }
 

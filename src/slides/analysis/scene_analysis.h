@@ -101,7 +101,6 @@ struct SceneAnalysis {
 SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier);
 
 /// Applies the analysis: turns on the auto terms it decided on, sets time.dt if not given.
-/// InputError when the decisions combine terms the stepper cannot yet combine.
 void applyAnalysis(const SceneAnalysis& analysis, Scene& scene);
 
 /// The decision table and figures as printed at the start of a run.

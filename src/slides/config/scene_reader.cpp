@@ -605,12 +605,6 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.autoThreshold = keys.scalar("physics.autoThreshold");
     readUnsteadyForces(keys, scene);
     readDispersionAndHeat(keys, scene);
-    if (scene.physics.unsteadyForces() && (scene.physics.dispersion != DispersionModel::none ||
-                                           scene.physics.heatTransfer != HeatTransferModel::none))
-        keys.fail(scene.physics.dispersion != DispersionModel::none ? "physics.dispersion.model"
-                                                                    : "physics.heatTransfer.model",
-                  "cannot yet be combined with the unsteady forces (history, addedMass, "
-                  "pressureGradient, lift, spin)");
 
     if (scene.carrier.type == CarrierType::none)
         keys.require("time.dt", "for carrier type none (no gas for the scene analysis)");

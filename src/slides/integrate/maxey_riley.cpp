@@ -29,7 +29,8 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     }
 }
 
-void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrier, double time,
+void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasStart,
+                                const EndSampler& sampleEnd,
                                 const std::vector<double>& stepLengths) {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
     auto& x = cloud.position;
@@ -37,7 +38,6 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
     const auto stateOf = [&](std::ptrdiff_t i) {
         return cloud.modelState.data() + static_cast<std::size_t>(i) * width_;
     };
-    carrier.sample(x, time, needs_, gasStart_);
     const double fluidDensity = scene_.fluid.density;
     const double particleDensity = scene_.particles.density;
     const double viscosity = scene_.fluid.kinematicViscosity;
@@ -58,7 +58,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         Vec3 startSlip = Vec3::Zero();
         if (history_) {
             Eigen::Map<Vec3> s0(state + historyOffset_);
-            if (state[0] == 0) s0 = gasStart_.velocity[i] - v[i]; // released now
+            if (state[0] == 0) s0 = gasStart.velocity[i] - v[i]; // released now
             startSlip = s0;
             const double historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity,
                                                          cloud.radius[i], addedMass);
@@ -74,7 +74,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         predicted_[i] =
             x[i] + 0.5 * h * (smooth + smoothNext) - (next.integral - now.integral) * startSlip;
     }
-    carrier.sample(predicted_, time + scene_.time.dt, needs_, gasEnd_);
+    sampleEnd(predicted_, gasEnd_);
 
     const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
     const LiftModel lift = scene_.physics.lift;
@@ -83,7 +83,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         double* state = stateOf(i);
         const double radius = cloud.radius[i];
         const Vec3 velocity = v[i];
-        const Vec3& u0 = gasStart_.velocity[i];
+        const Vec3& u0 = gasStart.velocity[i];
         const Vec3& u1 = gasEnd_.velocity[i];
         const Vec3 slipStart = u0 - velocity, slipEnd = u1 - predictedVelocity_[i];
 
@@ -109,7 +109,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierField& carrie
         }
         step.forceStart = step.forceEnd = bodyAcceleration_;
         if (needs_.velocityGradient) {
-            const Mat3& grad0 = gasStart_.velocityGradient[i];
+            const Mat3& grad0 = gasStart.velocityGradient[i];
             const Mat3& grad1 = gasEnd_.velocityGradient[i];
             step.forceStart += fluidAccelerationFactor_ * steadyFluidAcceleration(u0, grad0);
             step.forceEnd += fluidAccelerationFactor_ * steadyFluidAcceleration(u1, grad1);

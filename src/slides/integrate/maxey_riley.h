@@ -2,7 +2,10 @@
 // any of the unsteady terms is on; the stepper keeps its exponential schemes otherwise.
 //
 // Reference: Eq. 3.3/3.4 and 3.18 of the reference. Per step of length h, for every particle:
-//   1. the carrier at x_n (U, and ∇U when a term needs it), and at the predicted end x*,
+//   1. the carrier at x_n (U, and ∇U when a term needs it), and at the predicted end x*, both
+//      sampled by the stepper (from the particles' mesh cells, with their eddy fluctuations
+//      when dispersion is on, so the gas velocity a particle sees is U + ū'; k, ε and T of the
+//      start sample serve dispersion and heating),
 //      extrapolated on the smooth part w = v + s0 φ of the velocity (the start mode of
 //      physics/history_integrator.h carries the √t of a release with slip):
 //      w* = 2 w_n − w_{n−1}, x* = x_n + h (w_n + w*)/2 − s0 ∫φ (third-order accurate, so the
@@ -29,6 +32,7 @@
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/unsteady.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -41,9 +45,15 @@ public:
 
     /// Doubles of model state per particle.
     std::size_t stateWidth() const { return width_; }
+    /// What the step needs of both carrier samples.
+    CarrierNeeds needs() const { return needs_; }
 
-    /// Advances every particle i over stepLengths[i] from time t.
-    void advance(ParticleCloud& cloud, const CarrierField& carrier, double time,
+    /// Fills out with the gas the particles see at the given points at the step's end.
+    using EndSampler = std::function<void(const std::vector<Vec3>& points, CarrierSample& out)>;
+
+    /// Advances every particle i over stepLengths[i]: gasStart is the gas each sees at the
+    /// step's start (with what needs() asks for), sampleEnd samples the predicted ends.
+    void advance(ParticleCloud& cloud, const CarrierSample& gasStart, const EndSampler& sampleEnd,
                  const std::vector<double>& stepLengths);
 
 private:
@@ -56,7 +66,7 @@ private:
     std::optional<WindowTailLayout> history_;
     std::size_t historyOffset_ = 0, width_ = 0;
 
-    CarrierSample gasStart_, gasEnd_;
+    CarrierSample gasEnd_;
     std::vector<Vec3> predicted_;           ///< x* of each particle
     std::vector<Vec3> predictedVelocity_;   ///< v* at the step's end
     std::vector<Vec3> smoothVelocity_;      ///< w_n = v_n + s0 φ(age)

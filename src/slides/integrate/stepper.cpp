@@ -149,13 +149,23 @@ constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); }
 } // namespace
 
 void Stepper::advance(double h) {
-    if (maxeyRiley_) return maxeyRiley_->advance(cloud_, carrier_, time_, stepLengths_);
     if (scene_.carrier.type == CarrierType::none) return flyBallistically();
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    sampleCarrier(x, cloud_.carrierLocation, time_, needs_, gas_);
+    CarrierNeeds needs = needs_;
+    if (maxeyRiley_) needs.velocityGradient = maxeyRiley_->needs().velocityGradient;
+    sampleCarrier(x, cloud_.carrierLocation, time_, needs, gas_);
     dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
+    if (maxeyRiley_) {
+        // The predicted ends walk from the particles' cells and see the same eddies.
+        midpointLocations_ = cloud_.carrierLocation;
+        const auto sampleEnd = [&](const std::vector<Vec3>& points, CarrierSample& out) {
+            sampleCarrier(points, midpointLocations_, time_ + h, maxeyRiley_->needs(), out);
+            dispersion_.addTo(out.velocity);
+        };
+        return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
+    }
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
 

@@ -13,7 +13,8 @@
 //      (carrier none) by gravity alone, exactly; exponentialMidpoint
 //      samples the carrier a second time at the half-step positions;
 //      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
-//      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator;
+//      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator, on the sample of 2
+//      (with its eddy fluctuations) and a second one at its predicted ends;
 //   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
 //      (integrate/particle_heating.h);
 //   3c. with particle collisions on, contacts between particles during the step are resolved
@@ -140,7 +141,8 @@ private:
     std::vector<double> startTemperatures_; ///< with heat transfer
     std::vector<Vec3> midpointPositions_;
     std::vector<Vec3> midpointVelocities_;
-    std::vector<std::int32_t> midpointLocations_; ///< a mesh carrier's cells of the midpoints
+    /// A mesh carrier's cells of the midpoints (or of the Maxey–Riley step's predicted ends).
+    std::vector<std::int32_t> midpointLocations_;
 };
 
 } // namespace slides
