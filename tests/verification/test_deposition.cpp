@@ -8,6 +8,7 @@
 //  - the deposit is an obstacle: a second particle on the same path meets the stuck one
 //    (rigid, so m* = m, R* = R/2: v_crit = 0.847420 m/s for γ₁ = γ₂ = 0.046) and sticks on top
 //    of it below that speed, rebounds off it above.
+#include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/integrate/stepper.h"
 
@@ -98,6 +99,50 @@ TEST(DepositGrowth, SecondParticleReboundsOffTheFirstAboveTheParticleParticleLim
     // Just below the limit it sticks.
     EXPECT_EQ(run(0.99 * 0.847420, 2).stuck, 2u);
     EXPECT_EQ(run(1.01 * 0.847420, 2).stuck, 1u);
+}
+
+/// The first particle of depositionScene at `speed`, tracking its temperature (gas and
+/// particle at 300 K, so convection adds nothing), stepped until it arrives or turns back.
+Stepper heatedImpact(const Scene& scene, const CarrierField& gas) {
+    Stepper stepper(scene, gas);
+    while (!stepper.finished() && stepper.arrivals().empty() &&
+           (stepper.cloud().empty() || stepper.cloud().velocity[0].x() > 0))
+        stepper.step();
+    return stepper;
+}
+
+Scene heatedDepositionScene(double speed) {
+    Scene scene = depositionScene(speed, 1);
+    scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
+    scene.particles.specificHeat = 460;
+    scene.particles.injectionTemperature = 300;
+    scene.fluid.temperature = 300;
+    scene.fluid.thermalConductivity = 0.0257;
+    scene.fluid.specificHeat = 1005;
+    return scene;
+}
+
+TEST(CollisionalHeating, StickingTurnsTheImpactEnergyIntoHeat) {
+    // Eq. 2.117 with ΔH the whole ½mv² the particle arrives with: Δθ = v²/(2c).
+    const double speed = 0.99 * criticalSpeed;
+    const Scene scene = heatedDepositionScene(speed);
+    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(speed, 0, 0));
+    const Stepper stepper = heatedImpact(scene, gas);
+    ASSERT_EQ(stepper.arrivals().size(), 1u);
+    EXPECT_NEAR(stepper.arrivals()[0].temperature, 300 + speed * speed / (2 * 460), 1e-12 * 300);
+}
+
+TEST(CollisionalHeating, ReboundTurnsTheLostEnergyIntoHeat) {
+    // Head-on rebound with e = 0.343038 (Eq. 2.62, above): Δθ = (1 − e²) v²/(2c).
+    const double speed = 1.01 * criticalSpeed;
+    const Scene scene = heatedDepositionScene(speed);
+    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(speed, 0, 0));
+    const Stepper stepper = heatedImpact(scene, gas);
+    ASSERT_EQ(stepper.arrivals().size(), 0u);
+    const double rebound = -stepper.cloud().velocity[0].x();
+    EXPECT_NEAR(rebound / speed, 0.343038, 2e-6);
+    EXPECT_NEAR(stepper.cloud().temperature[0], 300 + (speed * speed - rebound * rebound) / 920,
+                1e-12 * 300);
 }
 
 } // namespace

@@ -81,7 +81,19 @@ struct CollisionSettings {
     RestitutionSettings restitution;
     FrictionSettings friction;
     SoftSphereSettings softSphere;
+    /// Impulse contacts heat their particles by the energy they dissipate (Eq. 2.117), when
+    /// temperatures are tracked (physics.heatTransfer).
+    bool heating = true;
 };
+
+/// Temperature rise [K] of bodies of total heat capacity c Σm sharing the kinetic energy an
+/// impulse contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).
+/// A pair shares it by heat capacity, so both warm alike; a rigid wall or the static deposit
+/// takes none.
+inline double collisionalTemperatureRise(double dissipatedEnergy, double specificHeat,
+                                         double heatedMass) {
+    return dissipatedEnergy / (specificHeat * heatedMass);
+}
 
 /// Whether a surface of this interaction meets particles by soft-sphere forces (a rebound wall
 /// under the softSphere model) rather than by the impulse law at the touch.

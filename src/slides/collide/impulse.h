@@ -56,6 +56,15 @@ inline Vec3 contactImpulse(const ImpactBody& a, const ImpactBody& b, const Vec3&
     return normalImpulse + tangentialImpulse;
 }
 
+/// Kinetic energy ½ m v² + ½ I ω² of a body (zero for a rigid one, which does not move) [J].
+inline double kineticEnergy(const ImpactBody& body) {
+    if (body.inverseMass == 0) return 0;
+    const double mass = 1 / body.inverseMass;
+    return 0.5 * mass *
+           (body.velocity.squaredNorm() +
+            0.4 * body.radius * body.radius * body.angularVelocity.squaredNorm());
+}
+
 /// Applies impulse J to body a and −J to body b at their contact points (Eq. 2.57–2.58).
 inline void applyImpulse(ImpactBody& a, ImpactBody& b, const Vec3& normal, const Vec3& impulse) {
     const auto apply = [](ImpactBody& body, const Vec3& arm, const Vec3& j) {

@@ -47,6 +47,7 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
     if (cloud.size() < 2) return;
     findContacts(cloud, startPositions);
     const MaterialSettings& material = scene_.particles.material;
+    const bool heats = scene_.collisions.heating && !cloud.temperature.empty();
     for (const ParticleContact& contact : contacts_) {
         const std::uint32_t a = contact.a, b = contact.b;
         const double s = contact.fraction;
@@ -66,7 +67,15 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
             contactPair({massA, cloud.radius[a], &material}, {massB, cloud.radius[b], &material});
         const double e = restitutionCoefficient(scene_.collisions.restitution, pair, approach);
         const Vec3 impulse = contactImpulse(bodyA, bodyB, normal, e, scene_.collisions.friction);
+        const double energyBefore = kineticEnergy(bodyA) + kineticEnergy(bodyB);
         applyImpulse(bodyA, bodyB, normal, impulse);
+        if (heats) {
+            const double rise = collisionalTemperatureRise(
+                energyBefore - kineticEnergy(bodyA) - kineticEnergy(bodyB),
+                scene_.particles.specificHeat, massA + massB);
+            cloud.temperature[a] += rise;
+            cloud.temperature[b] += rise;
+        }
         cloud.position[a] += (1 - s) * stepLengths[a] * (bodyA.velocity - cloud.velocity[a]);
         cloud.position[b] += (1 - s) * stepLengths[b] * (bodyB.velocity - cloud.velocity[b]);
         cloud.velocity[a] = bodyA.velocity;

@@ -10,7 +10,8 @@
 //    id), each by the impulse law (collide/impulse.h): every impulse conserves momentum
 //    exactly, a particle in several contacts sees the earlier ones, and the order is the same
 //    for any thread count. A particle's velocity change Δv also moves it by (1 − s) h Δv, the
-//    rest of the step flown with the new velocity.
+//    rest of the step flown with the new velocity. With temperatures tracked, the energy each
+//    contact dissipates heats both particles alike (Eq. 2.117, collisionalTemperatureRise).
 //
 //     collisions { model impulse; restitution { model velocityDependent; } }
 #pragma once

@@ -381,6 +381,7 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     restitution.yieldPressureFactor = keys.scalar("collisions.restitution.yieldPressureFactor");
     collisions.friction.staticCoefficient = keys.scalar("collisions.friction.static");
     collisions.friction.dynamicCoefficient = keys.scalar("collisions.friction.dynamic");
+    collisions.heating = keys.boolean("collisions.heating");
     if (collisions.model == CollisionModel::softSphere) {
         // The damped Hertz impact restitutes one e whatever the speed (physics/soft_contact.h).
         if (keys.has("collisions.restitution.model") &&

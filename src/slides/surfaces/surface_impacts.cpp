@@ -28,6 +28,15 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
             const double elapsed = 1 - (stepEnd - arrival.time) / stepLength;
             arrival.temperature = temperatureWithinStep(temperature->start, cloud.temperature[i],
                                                         temperature->gas, elapsed);
+            // Sticking dissipates all the kinetic energy it arrived with.
+            const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(arrival.surface)];
+            if (plane.interaction == SurfaceInteraction::deposit && heats()) {
+                const double mass = sphereMass(arrival.radius, scene_.particles.density);
+                const ImpactBody stuck{arrival.velocity, cloud.angularVelocity[i], 1 / mass,
+                                       arrival.radius};
+                arrival.temperature += collisionalTemperatureRise(
+                    kineticEnergy(stuck), scene_.particles.specificHeat, mass);
+            }
         }
         if (impact != ImpactResult::rebounded)
             return impact == ImpactResult::none ? result : impact;
@@ -125,7 +134,11 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     ImpactBody rigid;
     const double e = restitutionCoefficient(restitution, pair, normalSpeed);
     const Vec3 impulse = contactImpulse(body, rigid, normal, e, scene_.collisions.friction);
+    const double energyBefore = kineticEnergy(body);
     applyImpulse(body, rigid, normal, impulse);
+    if (heats())
+        cloud.temperature[i] += collisionalTemperatureRise(energyBefore - kineticEnergy(body),
+                                                           scene_.particles.specificHeat, mass);
     const Vec3 change = body.velocity - contactVelocity;
     const double remaining = (1 - fraction) * path.length;
     v += change;

@@ -13,6 +13,9 @@
 //             impulse J against a rigid body (collide/impulse.h, restitution from
 //             physics/restitution.h): v₁ += J/m, ω += r × J / I, and x₁ += (1 − s) h J/m, the
 //             rest of the step flown with the new velocity.
+// With temperatures tracked, a rebound heats the particle by the energy it dissipates, and a
+// particle that sticks by all its kinetic energy (Eq. 2.117; a rigid wall or the deposit takes
+// none of it).
 // After a rebound the rest of the chord, from the contact point, is searched again (up to
 // four contacts a step), so a particle bouncing in a corner or off the deposit onto the target
 // is caught. A hit on the deposit inherits the interaction and adhesion of the surface it grew on,
@@ -83,6 +86,11 @@ private:
     ImpactResult meetFirst(ParticleCloud& cloud, std::size_t i, Path& path, double stepEnd,
                            Arrival& arrival);
 
+    /// Whether impulse contacts heat the particles (Eq. 2.117): collisions.heating, with the
+    /// temperatures that heat transfer tracks.
+    bool heats() const {
+        return scene_.collisions.heating && scene_.physics.heatTransfer != HeatTransferModel::none;
+    }
     /// Contacts followed in one step; a particle still bouncing after them flies on.
     static constexpr int maxContactsPerStep = 4;
 
