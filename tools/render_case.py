@@ -94,7 +94,13 @@ def scalar_bar(table, title, x_position):
 
 
 def side_view(carrier, normal_option):
-    """(jet axis, view normal, up axis, camera side ±1 along the normal), axes as indices."""
+    """(jet axis, view normal, up axis, camera side ±1 along the normal), axes as indices.
+    Without a carrier (a scene without gas) the view is along y (or --normal) with z up."""
+    if carrier is None:
+        normal = AXES.index(normal_option) if normal_option else 1
+        up = 2 if normal != 2 else 1
+        jet_axis = 3 - normal - up
+        return jet_axis, normal, up, (-1 if up == (normal + 1) % 3 else 1)
     mean_component = abs(vtk_to_numpy(carrier.GetPointData().GetArray("U"))).mean(axis=0)
     jet_axis = int(mean_component.argmax())
     if normal_option:
@@ -170,18 +176,20 @@ def main():
     time, frame_file = choose_frame(os.path.join(arguments.output_directory, "particles.pvd"),
                                     arguments.time)
     particles = read(vtkXMLPolyDataReader, frame_file)
-    carrier = read(vtkXMLImageDataReader,
-                   os.path.join(arguments.output_directory, "carrier.vti"))
+    carrier_file = os.path.join(arguments.output_directory, "carrier.vti")
+    # No carrier.vti: a run without gas (carrier none), particles alone.
+    carrier = read(vtkXMLImageDataReader, carrier_file) if os.path.exists(carrier_file) else None
 
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     jet_axis, normal, up, side = side_view(carrier, arguments.normal)
-    backdrop, gas_table = carrier_backdrop(carrier, normal, side)
     dots, speed_table = particle_actor(particles)
-    renderer.AddActor(backdrop)
     renderer.AddActor(dots)
     renderer.AddActor2D(scalar_bar(speed_table, "particle speed [m/s]", 0.05))
-    renderer.AddActor2D(scalar_bar(gas_table, "carrier magU [m/s]", 0.55))
+    if carrier is not None:
+        backdrop, gas_table = carrier_backdrop(carrier, normal, side)
+        renderer.AddActor(backdrop)
+        renderer.AddActor2D(scalar_bar(gas_table, "carrier magU [m/s]", 0.55))
     title = vtkTextActor()
     title.SetInput(f"{os.path.basename(frame_file)}   t = {time:.6g} s   "
                    f"{particles.GetNumberOfPoints()} particles")
@@ -193,7 +201,7 @@ def main():
     # From the side: along the view normal, jet axis pointing right, parallel projection.
     camera = renderer.GetActiveCamera()
     camera.ParallelProjectionOn()
-    bounds = carrier.GetBounds()
+    bounds = (carrier if carrier is not None else particles).GetBounds()
     centre = [(bounds[2 * axis] + bounds[2 * axis + 1]) / 2 for axis in range(3)]
     position = list(centre)
     position[normal] += side * (10 * (bounds[2 * normal + 1] - bounds[2 * normal]) + 1.0)
