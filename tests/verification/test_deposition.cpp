@@ -101,17 +101,16 @@ TEST(DepositGrowth, SecondParticleReboundsOffTheFirstAboveTheParticleParticleLim
     EXPECT_EQ(run(1.01 * 0.847420, 2).stuck, 1u);
 }
 
-/// The first particle of depositionScene at `speed`, tracking its temperature (gas and
-/// particle at 300 K, so convection adds nothing), stepped until it arrives or turns back.
-Stepper heatedImpact(const Scene& scene, const CarrierField& gas) {
-    Stepper stepper(scene, gas);
-    while (!stepper.finished() && stepper.arrivals().empty() &&
-           (stepper.cloud().empty() || stepper.cloud().velocity[0].x() > 0))
-        stepper.step();
-    return stepper;
-}
+/// What became of the first particle of depositionScene at `speed` with its temperature
+/// tracked (gas and particle at 300 K, so convection adds nothing): stepped until it arrives
+/// or turns back.
+struct HeatedImpact {
+    std::vector<Arrival> arrivals;
+    double velocity = 0;    ///< along the flight, if still flying [m/s]
+    double temperature = 0; ///< if still flying [K]
+};
 
-Scene heatedDepositionScene(double speed) {
+HeatedImpact heatedImpact(double speed) {
     Scene scene = depositionScene(speed, 1);
     scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
     scene.particles.specificHeat = 460;
@@ -119,29 +118,35 @@ Scene heatedDepositionScene(double speed) {
     scene.fluid.temperature = 300;
     scene.fluid.thermalConductivity = 0.0257;
     scene.fluid.specificHeat = 1005;
-    return scene;
+    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(speed, 0, 0));
+    Stepper stepper(scene, gas);
+    while (!stepper.finished() && stepper.arrivals().empty() &&
+           (stepper.cloud().empty() || stepper.cloud().velocity[0].x() > 0))
+        stepper.step();
+    HeatedImpact impact{stepper.arrivals()};
+    if (!stepper.cloud().empty()) {
+        impact.velocity = stepper.cloud().velocity[0].x();
+        impact.temperature = stepper.cloud().temperature[0];
+    }
+    return impact;
 }
 
 TEST(CollisionalHeating, StickingTurnsTheImpactEnergyIntoHeat) {
     // Eq. 2.117 with ΔH the whole ½mv² the particle arrives with: Δθ = v²/(2c).
     const double speed = 0.99 * criticalSpeed;
-    const Scene scene = heatedDepositionScene(speed);
-    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(speed, 0, 0));
-    const Stepper stepper = heatedImpact(scene, gas);
-    ASSERT_EQ(stepper.arrivals().size(), 1u);
-    EXPECT_NEAR(stepper.arrivals()[0].temperature, 300 + speed * speed / (2 * 460), 1e-12 * 300);
+    const HeatedImpact impact = heatedImpact(speed);
+    ASSERT_EQ(impact.arrivals.size(), 1u);
+    EXPECT_NEAR(impact.arrivals[0].temperature, 300 + speed * speed / (2 * 460), 1e-12 * 300);
 }
 
 TEST(CollisionalHeating, ReboundTurnsTheLostEnergyIntoHeat) {
     // Head-on rebound with e = 0.343038 (Eq. 2.62, above): Δθ = (1 − e²) v²/(2c).
     const double speed = 1.01 * criticalSpeed;
-    const Scene scene = heatedDepositionScene(speed);
-    const test::UniformTurbulentGas gas(0.0, 0.0, 300, Vec3(speed, 0, 0));
-    const Stepper stepper = heatedImpact(scene, gas);
-    ASSERT_EQ(stepper.arrivals().size(), 0u);
-    const double rebound = -stepper.cloud().velocity[0].x();
+    const HeatedImpact impact = heatedImpact(speed);
+    ASSERT_EQ(impact.arrivals.size(), 0u);
+    const double rebound = -impact.velocity;
     EXPECT_NEAR(rebound / speed, 0.343038, 2e-6);
-    EXPECT_NEAR(stepper.cloud().temperature[0], 300 + (speed * speed - rebound * rebound) / 920,
+    EXPECT_NEAR(impact.temperature, 300 + (speed * speed - rebound * rebound) / (2 * 460),
                 1e-12 * 300);
 }
 
