@@ -34,6 +34,7 @@ enum class ExtraPhysics {
     unsteadyForces,       ///< history memory, spin and the rest of the Maxey–Riley state
     dispersionAndHeat,    ///< eddy states with their random-event counters, temperatures
     collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
+    softSpheres,          ///< contact loads and the springs of touching contacts
 };
 
 /// Inserts entry after the first occurrence of anchor in text.
@@ -66,6 +67,22 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
             "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n",
             "collisions { model impulse; }\ndeposition { adhesionFactor 5000; }\n");
         // Most of the deposit forms by 15 ms; a few particles would bounce on to 0.1 s.
+        const auto end = text.find("endTime         0.1;");
+        ASSERT_NE(end, std::string::npos);
+        text.replace(end, 20, "endTime         0.015;");
+    }
+    if (physics == ExtraPhysics::softSpheres) {
+        // Soft particles (E* ≈ 1.3e5 Pa), so that the given step resolves their contacts (about
+        // ten steps at 1 m/s, Eq. 2.59); the target becomes a soft wall.
+        insertAfter(text, "        normal  (-1 0 0);\n", "        interaction rebound;\n");
+        const auto moduli =
+            text.find("        bulkModulus     167e9;\n        shearModulus    77e9;");
+        ASSERT_NE(moduli, std::string::npos);
+        text.replace(moduli, 60, "        bulkModulus     1e5;\n        shearModulus    5e4;");
+        insertAfter(
+            text,
+            "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n",
+            "collisions { model softSphere; restitution { model constant; coefficient 0.8; } }\n");
         const auto end = text.find("endTime         0.1;");
         ASSERT_NE(end, std::string::npos);
         text.replace(end, 20, "endTime         0.015;");
@@ -176,7 +193,7 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
 
 std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
     const char* physics[] = {"", "WithUnsteadyForces", "WithDispersionAndHeat",
-                             "WithCollisionsAndDeposit"};
+                             "WithCollisionsAndDeposit", "WithSoftSpheres"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
@@ -188,7 +205,8 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                                          KillMoment{150, ExtraPhysics::none},
                                          KillMoment{100, ExtraPhysics::unsteadyForces},
                                          KillMoment{100, ExtraPhysics::dispersionAndHeat},
-                                         KillMoment{100, ExtraPhysics::collisionsAndDeposit}),
+                                         KillMoment{100, ExtraPhysics::collisionsAndDeposit},
+                                         KillMoment{100, ExtraPhysics::softSpheres}),
                          killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.

@@ -196,8 +196,6 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
     summary["arrivals"] = arrivals;
     if (stepper.collisions() > 0 || scene.collisions.model != CollisionModel::none)
         summary["collisions"] = {{"particlePairs", stepper.collisions()}};
-    if (const SoftSphereCollisions* softSpheres = stepper.softSpheres())
-        summary["collisions"]["neighbourListBuilds"] = softSpheres->listBuilds();
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const PlaneSurface& plane = scene.surfaces[s];
         if (plane.interaction == SurfaceInteraction::absorb) continue;
@@ -233,6 +231,9 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
         {"particleSteps", stepper.particleSteps()},
         {"particleStepsPerSecond",
          metrics.steppingSeconds > 0 ? particleSteps / metrics.steppingSeconds : 0.0}};
+    // A cost, not a result: a restarted run builds its list once more.
+    if (const SoftSphereCollisions* softSpheres = stepper.softSpheres())
+        summary["performance"]["neighbourListBuilds"] = softSpheres->listBuilds();
     if (metrics.analysis) summary["sceneAnalysis"] = sceneAnalysisJson(*metrics.analysis);
     summary["settings"] = sceneSettings(scene);
     return summary;
