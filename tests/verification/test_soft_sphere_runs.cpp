@@ -3,6 +3,7 @@
 // the Hertz–Mindlin loads (Eq. 2.4–2.14) against Hertz theory (Eq. 2.59) and the restitution
 // coefficient, a dropped sphere on a soft wall, and a granular gas that must conserve linear and
 // angular momentum and give the same numbers for any thread count, neighbour skin or restart.
+#include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
 #include "slides/integrate/stepper.h"
@@ -61,13 +62,23 @@ struct HeadOn {
     double reboundSpeed = 0; ///< relative normal speed after the impact [m/s]
     double duration = 0;     ///< steps with a load, times dt [s]
     double momentumChange = 0;
+    double heat = 0; ///< Σ m c Δθ, with heating [J]
 };
 
-/// Two spheres closing at 1 m/s along x, 0.1 mm apart, integrated until they part.
-HeadOn headOnImpact(double restitution, double dt) {
-    const Scene scene = demScene(2, restitution, dt);
+/// Two spheres closing at 1 m/s along x, 0.1 mm apart, integrated until they are apart; heated:
+/// in a still 300 K gas too thin to drag them (ρf = 1e-12), with temperatures tracked.
+HeadOn headOnImpact(double restitution, double dt, bool heated = false) {
+    Scene scene = demScene(2, restitution, dt);
+    if (heated) {
+        scene.carrier.type = CarrierType::analyticJet; // any: the gas is given below
+        scene.fluid = {1e-12, 1.5e-5, 300, 0.0257, 1005};
+        scene.physics.heatTransfer = HeatTransferModel::ranzMarshall;
+        scene.particles.specificHeat = 460;
+        scene.particles.injectionTemperature = 300;
+    }
     NoGas vacuum;
-    Stepper stepper(scene, vacuum);
+    const test::UniformTurbulentGas stillGas(0, 0, 300);
+    Stepper stepper(scene, heated ? static_cast<const CarrierField&>(stillGas) : vacuum);
     ParticleCloud cloud;
     cloud.add(0, Vec3(-radius - 5e-5, 0, 0), Vec3(0.5, 0, 0), radius);
     cloud.add(1, Vec3(radius + 5e-5, 0, 0), Vec3(-0.5, 0, 0), radius);
@@ -78,12 +89,14 @@ HeadOn headOnImpact(double restitution, double dt) {
         stepper.step();
         const ParticleCloud& c = stepper.cloud();
         if (c.contactForce[0].squaredNorm() > 0) ++loaded;
-        if (loaded > 0 && c.contactForce[0].squaredNorm() == 0) break;
+        // Apart: the load may end before the overlap does, when the damping would pull.
+        if (loaded > 0 && (c.position[1] - c.position[0]).norm() > 2 * radius) break;
     }
     const ParticleCloud& c = stepper.cloud();
     result.reboundSpeed = (c.velocity[1] - c.velocity[0]).x();
     result.duration = static_cast<double>(loaded) * dt;
     result.momentumChange = (mass * (c.velocity[0] + c.velocity[1])).norm();
+    for (const double temperature : c.temperature) result.heat += mass * 460 * (temperature - 300);
     return result;
 }
 
@@ -109,6 +122,16 @@ TEST(SoftSphereStepper, DampedHeadOnImpactRestitutesTheCoefficient) {
         EXPECT_NEAR(impact.reboundSpeed, e, 5e-4 * e) << "e = " << e;
         EXPECT_LT(impact.momentumChange, 1e-15 * mass);
     }
+}
+
+TEST(SoftSphereStepper, DampingHeatsThePairByTheEnergyItDissipates) {
+    // Eq. 2.117: the kinetic energy lost, ½ m* (1 − e²) v² with m* = m/2, v = 1 m/s, reappears
+    // as heat; the dissipated power is summed once a step over 200 steps of contact.
+    const HeadOn impact = headOnImpact(0.5, 1e-6, true);
+    const double lost = 0.25 * mass * (1 - impact.reboundSpeed * impact.reboundSpeed);
+    EXPECT_NEAR(impact.reboundSpeed, 0.5, 5e-4 * 0.5); // the gas does not disturb the impact
+    // Measured 0.36 % above: the power is taken at the half-step velocities (first order).
+    EXPECT_NEAR(impact.heat, lost, 0.01 * lost);
 }
 
 TEST(SoftSphereStepper, SphereDroppedOnASoftFloorReboundsToE2TimesItsHeight) {

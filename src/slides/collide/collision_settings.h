@@ -81,13 +81,13 @@ struct CollisionSettings {
     RestitutionSettings restitution;
     FrictionSettings friction;
     SoftSphereSettings softSphere;
-    /// Impulse contacts heat their particles by the energy they dissipate (Eq. 2.117), when
+    /// Contacts heat their particles by the energy they dissipate (Eq. 2.117), when
     /// temperatures are tracked (physics.heatTransfer).
     bool heating = true;
 };
 
-/// Temperature rise [K] of bodies of total heat capacity c Σm sharing the kinetic energy an
-/// impulse contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).
+/// Temperature rise [K] of bodies of total heat capacity c Σm sharing the kinetic energy a
+/// contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).
 /// A pair shares it by heat capacity, so both warm alike; a rigid wall or the static deposit
 /// takes none.
 inline double collisionalTemperatureRise(double dissipatedEnergy, double specificHeat,

@@ -169,18 +169,33 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
     }
     collisions_ += begun;
 
+    // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
+    const bool heats = scene_.collisions.heating && !cloud.temperature.empty();
+    const double density = scene_.particles.density;
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
+        double heat = 0; // [K]
         for (std::uint32_t k = entryStart_[i]; k < entryStart_[i + 1]; ++k) {
+            const Entry& entry = entries_[entryOf_[k] / 2];
             const ContactLoad& load = loads_[entryOf_[k] / 2];
             const bool second = entryOf_[k] % 2 == 1;
             force += second ? Vec3(-load.force) : load.force;
             torque += second ? load.torqueOnSecond : load.torqueOnFirst;
+            if (heats && load.dissipatedPower > 0) {
+                const double masses =
+                    sphereMass(cloud.radius[entry.first], density) +
+                    (entry.second >= 0
+                         ? sphereMass(cloud.radius[static_cast<std::size_t>(entry.second)], density)
+                         : 0.0);
+                heat += collisionalTemperatureRise(load.dissipatedPower * dt,
+                                                   scene_.particles.specificHeat, masses);
+            }
         }
         cloud.contactForce[i] = force;
         cloud.contactTorque[i] = torque;
+        if (heats) cloud.temperature[i] += heat;
     }
 }
 

@@ -13,6 +13,8 @@
 // 2. Loads of every entry, in parallel; then each particle sums its entries' loads in the order
 //    of its partners' ids. The sum is thus the same for any thread count and any rebuild
 //    history, and a pair's equal and opposite forces conserve momentum to round-off.
+// With temperatures tracked (physics.heatTransfer, collisions.heating), each contact's dissipated
+// power (ContactLoad::dissipatedPower) over the step heats its particles alike (Eq. 2.117).
 // Soft walls are the surfaces whose interaction is rebound (meetsBySoftContact); absorbing and
 // deposit surfaces, and the deposit, keep meeting particles at the touch (surfaces/).
 //

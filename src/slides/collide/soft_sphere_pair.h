@@ -27,6 +27,10 @@ struct ContactLoad {
     Vec3 force = Vec3::Zero();          ///< on the first body; the second gets −force [N]
     Vec3 torqueOnFirst = Vec3::Zero();  ///< [N m]
     Vec3 torqueOnSecond = Vec3::Zero(); ///< [N m]
+    /// Power the contact turns into heat [W] (Eq. 2.113: the work of its dissipative parts):
+    /// (F_n − F_el) dδ/dt of the normal damping (and of the no-pull clamp), γ_t v_t² while the
+    /// tangential spring sticks, −F_t·v_t while it slides at the Coulomb limit.
+    double dissipatedPower = 0;
 };
 
 /// Load of sphere a on sphere b (force on a). The spring is that pair's; it is reset when the

@@ -262,8 +262,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "μ_d: tangential impulse of a slipping contact per normal impulse; the Coulomb limit "
          "μ of softSphere contacts."},
         {"collisions.heating", K::boolean, "-", "on", {}, R::any,
-         "Impulse contacts (pairs, rebounds, sticking) heat their particles by the kinetic energy "
-         "they dissipate (Eq. 2.117), shared by heat capacity; with physics.heatTransfer on."},
+         "Contacts (impulse pairs, rebounds, sticking; soft-sphere damping and sliding) heat "
+         "their particles by the energy they dissipate (Eq. 2.117), shared by heat capacity; "
+         "with physics.heatTransfer on."},
         {"collisions.softSphereCoeffs", K::dictionary, "-", "-", {}, R::any,
          "The softSphere model (collide/soft_sphere_collisions.h); its damping follows from "
          "restitution.coefficient, which must then be constant."},

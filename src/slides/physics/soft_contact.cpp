@@ -74,6 +74,10 @@ double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, doub
     return std::max(0.0, stiffness * overlap + damping * closingSpeed);
 }
 
+double mindlinStiffness(const ContactPair& pair, double overlap) {
+    return 8.0 * pair.shearModulus * contactRadius(pair, overlap);
+}
+
 double hertzElasticEnergy(const ContactPair& pair, double overlap) {
     return 8.0 / 15.0 * pair.youngsModulus * std::sqrt(pair.radius) * std::pow(overlap, 2.5);
 }
@@ -91,8 +95,8 @@ Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
     const Vec3 tangentialSlip = slipVelocity - slipVelocity.dot(normal) * normal;
     xi += tangentialSlip * dt;
 
-    const double stiffness = 8.0 * pair.shearModulus * contactRadius(pair, overlap); // S_t = k_t
-    const double damping = dampingFactor(law) * std::sqrt(stiffness * pair.mass);    // γ_t
+    const double stiffness = mindlinStiffness(pair, overlap);
+    const double damping = dampingFactor(law) * std::sqrt(stiffness * pair.mass); // γ_t
     Vec3 force = -stiffness * xi - damping * tangentialSlip;
 
     // Coulomb limit (Eq. 2.14): scale the force down to μF_n and shorten the spring so that it

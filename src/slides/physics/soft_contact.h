@@ -60,6 +60,9 @@ struct TangentialSpring {
     Vec3 displacement = Vec3::Zero(); ///< ξ [m], in the tangent plane
 };
 
+/// Mindlin's tangential stiffness k_t = S_t = 8 G* √(R* δ) [N/m] (Eq. 2.5, inverted).
+double mindlinStiffness(const ContactPair& pair, double overlap);
+
 /// Tangential force [N] on the first body (Eq. 2.5, 2.14): the spring is rotated into the
 /// tangent plane of the current normal n (keeping its length), stretched by v_t dt, and the force
 /// −k_t ξ − γ_t v_t truncated at μ F_n, the spring shortened to match (Cundall & Strack).
