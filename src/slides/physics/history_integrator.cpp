@@ -11,24 +11,25 @@ namespace {
 
 constexpr double rootPi = 1.7724538509055160273; // √π
 
-/// g_m(x) = Σ_{k≥m} (−x)^(k−m) / Γ(1 + k/2), m = 0, 1, 2: e^{x²}erfc(x) = g_0 and the two
-/// remainders g_0 = 1 − x g_1, g_1 = 2/√π − x g_2 that the start-mode integrals need.
-std::array<double, 3> erfcSeriesRemainders(double x) {
-    if (x >= 0.5) {
-        const double g0 = scaledComplementaryError(x);
-        const double g1 = (1.0 - g0) / x;
-        return {g0, g1, (2.0 / rootPi - g1) / x};
-    }
-    // Power series: terms fall by ≥ 2 per order for x < 0.5; 40 terms reach round-off.
-    constexpr std::size_t terms = 40;
+/// g_m(x) = Σ_{k≥m} (−x)^(k−m) / Γ(1 + k/2), m = 0 … 4: e^{x²}erfc(x) = g_0 and the remainders
+/// g_m = 1/Γ(1 + m/2) − x g_{m+1} that the start-mode integrals and the spin kernel's weights need.
+std::array<double, 5> erfcSeriesRemainders(double x) {
+    constexpr std::size_t orders = 5;
     static const auto inverseGamma = [] {
-        std::array<double, terms + 2> table{};
+        std::array<double, 48> table{};
         for (std::size_t k = 0; k < table.size(); ++k)
             table[k] = 1.0 / std::tgamma(1.0 + 0.5 * static_cast<double>(k));
         return table;
     }();
-    std::array<double, 3> g{};
-    for (std::size_t m = 0; m < 3; ++m) {
+    std::array<double, orders> g{};
+    if (x >= 0.5) {
+        g[0] = scaledComplementaryError(x);
+        for (std::size_t m = 1; m < orders; ++m) g[m] = (inverseGamma[m - 1] - g[m - 1]) / x;
+        return g;
+    }
+    // Power series: terms fall by ≥ 2 per order for x < 0.5; 40 terms reach round-off.
+    constexpr std::size_t terms = 40;
+    for (std::size_t m = 0; m < orders; ++m) {
         double power = 1, sum = 0;
         for (std::size_t k = m; k < m + terms; ++k) {
             sum += power * inverseGamma[k];
@@ -48,6 +49,40 @@ double unitFirstMoment(double p) {
 double olderEndWeight(double p) { return unitFirstMoment(p) - p * unitKernelIntegral(p); }
 double newerEndWeight(double p) { return (p + 1) * unitKernelIntegral(p) - unitFirstMoment(p); }
 
+/// Weights of the newer (lag p h) and older (lag (p + 1) h) node of the spin kernel's bounded
+/// part √(π/t_v) ψ(ℓ/t_v), ψ(U) = e^U erfc(√U), on that step with ρ linear on it [√s].
+struct EndWeights {
+    double newer, older;
+};
+EndWeights boundedPartWeights(long p, double h, double viscousTime) {
+    const double span = h / viscousTime; // the step in U = ℓ/t_v
+    const double scale = std::sqrt(std::numbers::pi * viscousTime);
+    if (p == 0) {
+        // ∫_0^U ψ = U g_2 and ∫_0^U u ψ du = U²(1 − g_4 − x g_3), x = √U, without cancellation.
+        const double x = std::sqrt(span);
+        const auto g = erfcSeriesRemainders(x);
+        const double zeroth = span * g[2], first = span * span * (1 - g[4] - x * g[3]);
+        const double older = first / span;
+        return {scale * (zeroth - older), scale * older};
+    }
+    // ψ is analytic around [p, p + 1]·span, p ≥ 1: 8-point Gauss–Legendre errs below 1e-12.
+    static constexpr std::array<double, 4> node{0.1834346424956498, 0.5255324099163290,
+                                                0.7966664774136267, 0.9602898564975363};
+    static constexpr std::array<double, 4> weight{0.3626837833783620, 0.3137066458778873,
+                                                  0.2223810344533745, 0.1012285362903763};
+    EndWeights sum{0, 0};
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        for (const double side : {-1.0, 1.0}) {
+            const double fraction = 0.5 * (1 + side * node[i]); // 0 at the newer end
+            const double psi =
+                scaledComplementaryError(std::sqrt((static_cast<double>(p) + fraction) * span));
+            sum.newer += 0.5 * weight[i] * psi * (1 - fraction);
+            sum.older += 0.5 * weight[i] * psi * fraction;
+        }
+    }
+    return {scale * span * sum.newer, scale * span * sum.older};
+}
+
 } // namespace
 
 double scaledComplementaryError(double x) {
@@ -63,6 +98,16 @@ StartMode startMode(double alpha, double age) {
     return {g[0], age * g[2], rootPi * rootAge * g[1]};
 }
 
+StartMode spinStartMode(double historyRate, double viscousTime, double age) {
+    // φ̂ = (1 + √(t_v p))/(p (1 + b + √(t_v p))) = [1/p + b √t_v /(1 + b) (1/√p − 1/(√p + c))]
+    // /(1 + b): the inverse transforms 1, and c E(c√t) whose integral is t g_2 (as Basset's).
+    const double b = historyRate * std::sqrt(std::numbers::pi * viscousTime);
+    const double c = (1 + b) / std::sqrt(viscousTime);
+    const double rootAge = std::sqrt(age);
+    const auto g = erfcSeriesRemainders(c * rootAge);
+    return {(1 + b * g[0]) / (1 + b), age * (1 + b * g[2]) / (1 + b), rootPi * rootAge * g[1]};
+}
+
 double productWeight(int order, long lag) {
     const auto k = static_cast<double>(lag);
     if (order == 1) return unitKernelIntegral(k); // ρ constant = its right-end value
@@ -71,6 +116,24 @@ double productWeight(int order, long lag) {
 
 double productEndWeight(int order, long lag) {
     return order == 1 ? 0.0 : olderEndWeight(static_cast<double>(lag - 1));
+}
+
+double kernelWeight(int order, long lag, double h, HistoryKernel kernel) {
+    double weight = std::sqrt(h) * productWeight(order, lag);
+    if (kernel.viscousTime == 0) return weight;
+    // Order 1: ρ constant on the step lag … lag + 1 at its newer value; order 2: linear.
+    const EndWeights step = boundedPartWeights(lag, h, kernel.viscousTime);
+    weight -= step.newer;
+    if (order == 1) return weight - step.older;
+    if (lag > 0) weight -= boundedPartWeights(lag - 1, h, kernel.viscousTime).older;
+    return weight;
+}
+
+double kernelEndWeight(int order, long lag, double h, HistoryKernel kernel) {
+    if (order == 1) return 0.0;
+    const double weight = std::sqrt(h) * productEndWeight(order, lag);
+    if (kernel.viscousTime == 0) return weight;
+    return weight - boundedPartWeights(lag - 1, h, kernel.viscousTime).older;
 }
 
 ExponentialSum ExponentialSum::fit(double window, double horizon, double accuracy) {
@@ -102,18 +165,19 @@ double ExponentialSum::operator()(double lag) const {
     return value;
 }
 
-FullHistory::FullHistory(double h, int order, const Vec3& startRemainder)
-    : rootH_(std::sqrt(h)), order_(order), values_{startRemainder} {}
+FullHistory::FullHistory(double h, int order, const Vec3& startRemainder, HistoryKernel kernel)
+    : h_(h), order_(order), kernel_(kernel),
+      newestWeight_(kernelWeight(order, 0, h, kernel)), values_{startRemainder} {}
 
 Vec3 FullHistory::beginStep() {
     const long n = static_cast<long>(values_.size()) - 1; // values ρ_0 … ρ_n
     while (static_cast<long>(weights_.size()) <= n) {
-        weights_.push_back(productWeight(order_, static_cast<long>(weights_.size())));
+        weights_.push_back(kernelWeight(order_, static_cast<long>(weights_.size()), h_, kernel_));
     }
-    Vec3 sum = productEndWeight(order_, n + 1) * values_[0];
+    Vec3 sum = kernelEndWeight(order_, n + 1, h_, kernel_) * values_[0];
     for (long j = 1; j <= n; ++j)
         sum += weights_[static_cast<std::size_t>(n + 1 - j)] * values_[static_cast<std::size_t>(j)];
-    return rootH_ * sum;
+    return sum;
 }
 
 WindowTailLayout WindowTailLayout::make(double h, double horizon, double accuracy) {
@@ -125,7 +189,8 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
     // window of about 1/Δy steps.
     const double stepY =
         std::numbers::pi * std::numbers::pi / std::log(2.0 * std::sqrt(2.0) / (accuracy / 3.0));
-    layout.window = std::max(1, static_cast<int>(std::lround(1.0 / stepY)));
+    layout.window =
+        std::clamp(static_cast<int>(std::lround(1.0 / stepY)), 1, WindowTailHistory::largestWindow);
     const double windowLength = layout.window * h;
     layout.tail = ExponentialSum::fit(windowLength, horizon, accuracy);
     const double rootH = std::sqrt(h);
@@ -149,19 +214,35 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
     return layout;
 }
 
+WindowTailHistory::WindowTailHistory(const WindowTailLayout& layout, double* state,
+                                     HistoryKernel kernel)
+    : layout_(layout), state_(state), kernel_(kernel) {
+    const int window = layout.window;
+    for (int k = 0; k <= window; ++k) {
+        const auto at = static_cast<std::size_t>(k);
+        windowWeights_[at] = kernel.viscousTime == 0 ? layout.windowWeights[at]
+                             : k < window            ? kernelWeight(2, k, layout.h, kernel)
+                                                     : kernelEndWeight(2, k, layout.h, kernel);
+    }
+}
+
 Vec3 WindowTailHistory::beginStep() {
-    // State: ρ at lags 0 … window, then the tail sums a_i F_i (amplitude folded in).
+    // State: ρ at lags 0 … window, then the tail sums a_i F_i (amplitude folded in). The spin
+    // kernel's amplitudes are Basset's times t_v x_i/(1 + t_v x_i), x_i = 1/θ_i.
     const int window = layout_.window;
     const Vec3 leavingNewer = lagged(window - 1);
     const Vec3 leavingOlder = lagged(window);
-    Vec3 known = layout_.windowWeights[static_cast<std::size_t>(window)] * leavingNewer;
+    Vec3 known = windowWeights_[static_cast<std::size_t>(window)] * leavingNewer;
     for (int k = 1; k < window; ++k)
-        known += layout_.windowWeights[static_cast<std::size_t>(k)] * lagged(k - 1);
+        known += windowWeights_[static_cast<std::size_t>(k)] * lagged(k - 1);
     double* tail = state_ + 3 * (window + 1);
+    const double viscousTime = kernel_.viscousTime;
     for (std::size_t i = 0; i < layout_.tail.size(); ++i) {
+        const double spectrum =
+            viscousTime == 0 ? 1.0 : viscousTime / (layout_.tail.timescale[i] + viscousTime);
         Eigen::Map<Vec3> term(tail + 3 * i);
-        term = layout_.tailDecay[i] * term + layout_.tailNewWeight[i] * leavingNewer +
-               layout_.tailOldWeight[i] * leavingOlder;
+        term = layout_.tailDecay[i] * term + spectrum * (layout_.tailNewWeight[i] * leavingNewer +
+                                                         layout_.tailOldWeight[i] * leavingOlder);
         known += term;
     }
     return known;
@@ -173,8 +254,13 @@ void WindowTailHistory::endStep(const Vec3& remainder) {
     newest = remainder;
 }
 
-StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h) {
+StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,
+                            HistoryKernel kernel) {
     if (start.startSlip.isZero(0)) return {};
+    if (kernel.viscousTime > 0) {
+        return {spinStartMode(historyRate, kernel.viscousTime, start.age),
+                spinStartMode(historyRate, kernel.viscousTime, start.age + h)};
+    }
     const double alpha = rootPi * historyRate;
     return {startMode(alpha, start.age), startMode(alpha, start.age + h)};
 }
@@ -183,7 +269,7 @@ template <typename Memory>
 StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, HistoryStart& start,
                               Memory& memory) {
     return advanceWithHistory(step, velocity, start, memory,
-                              startModeStep(step.historyRate, start, step.h));
+                              startModeStep(step.historyRate, start, step.h, memory.kernel()));
 }
 
 template <typename Memory>

@@ -14,6 +14,8 @@
 // s = s0 φ(t) + ρ(t) with the start mode φ(t) = e^{α²t} erfc(α√t), α = √π r_H, whose √t term is
 // the exact one of the solution (v − v0 ≈ 2 r_H s0 √t); φ's integrals are closed form, and the
 // remainder ρ = O(t) with ρ(0) = 0 is integrated by the quadrature at full order.
+// The same machinery integrates the spin's unsteady torque (Eq. 3.19, Feuillebois & Lasek 1978,
+// Q. J. Mech. Appl. Math. 31:435), whose kernel is 1/√ℓ less a bounded part (HistoryKernel).
 //
 //     physics { history { model basset; accuracy 1e-3; } }   // model none | basset
 #pragma once
@@ -43,6 +45,14 @@ constexpr std::array<HistoryModelName, 2> historyModelNames() {
 /// e^{x²} erfc(x) for x ≥ 0, without overflow for large x.
 double scaledComplementaryError(double x);
 
+/// The kernel k of I(t) = ∫_0^t k(t − τ) s(τ) dτ. Basset's is 1/√ℓ (viscousTime 0). The spin's
+/// (Eq. 3.19, in the Laplace domain k̂ = √(π t_v)/(1 + √(t_v p))) is
+///   k(ℓ) = 1/√ℓ − √(π/t_v) e^{ℓ/t_v} erfc(√(ℓ/t_v)),  t_v = R²/ν,
+/// i.e. 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx with its spectrum weighted by t_v x/(1 + t_v x).
+struct HistoryKernel {
+    double viscousTime = 0; ///< t_v = R²/ν [s]; 0: Basset's 1/√ℓ
+};
+
 /// The start mode φ(t) = e^{α²t} erfc(α√t) and its closed-form integrals.
 struct StartMode {
     double value;    ///< φ(t)
@@ -50,6 +60,10 @@ struct StartMode {
     double history;  ///< ∫_0^t φ(τ)/√(t − τ) dτ [√s]
 };
 StartMode startMode(double alpha, double age);
+/// The start mode of the spin kernel: φ solves φ + r_H ∫ k φ = 1 (the history-only equation),
+///   φ = (1 + b E(c√t))/(1 + b),  b = r_H √(π t_v),  c = (1 + b)/√t_v,  E(x) = e^{x²}erfc(x),
+/// with the same √t start as Basset's, so its history integral is (1 − φ)/r_H.
+StartMode spinStartMode(double historyRate, double viscousTime, double age);
 
 /// The start mode at both ends of a step [age, age + h]; φ = 1, integrals 0 when s0 = 0.
 struct StartModeStep {
@@ -57,7 +71,8 @@ struct StartModeStep {
     StartMode after{1, 0, 0};
 };
 struct HistoryStart;
-StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h);
+StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,
+                            HistoryKernel kernel = {});
 
 /// Product-integration weight c_k of the node k steps back in I(t_n) = √h Σ_k c_k ρ_{n−k}
 /// for a node inside the integration range: piecewise-constant ρ (order 1, Daitche's first-order
@@ -65,6 +80,10 @@ StartModeStep startModeStep(double historyRate, const HistoryStart& start, doubl
 double productWeight(int order, long lag);
 /// Weight of the oldest node ρ_0 when it sits lag steps back (order 2; 0 for order 1).
 double productEndWeight(int order, long lag);
+/// The same weights for a kernel and step h, in √s: √h c_k for Basset's, less the weights of
+/// the spin kernel's bounded part (closed form on the newest step, Gauss–Legendre beyond).
+double kernelWeight(int order, long lag, double h, HistoryKernel kernel);
+double kernelEndWeight(int order, long lag, double h, HistoryKernel kernel);
 
 /// 1/√ℓ ≈ Σ_i amplitude_i e^{−ℓ/timescale_i} for ℓ in [window, horizon] with relative error
 /// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx.
@@ -106,18 +125,22 @@ struct StepResult {
 class FullHistory {
 public:
     /// order 1 or 2; startRemainder is ρ_0 (zero with the start treatment, s0 without).
-    FullHistory(double h, int order, const Vec3& startRemainder = Vec3::Zero());
-    double newestWeight() const { return rootH_ * productWeight(order_, 0); }
+    FullHistory(double h, int order, const Vec3& startRemainder = Vec3::Zero(),
+                HistoryKernel kernel = {});
+    HistoryKernel kernel() const { return kernel_; }
+    double newestWeight() const { return newestWeight_; }
     /// √h Σ_{k≥1} c_k ρ_{n+1−k}: the part of I_{n+1} known before ρ_{n+1}.
     Vec3 beginStep();
     void endStep(const Vec3& remainder) { values_.push_back(remainder); }
     std::size_t bytes() const { return values_.capacity() * sizeof(Vec3); }
 
 private:
-    double rootH_;
+    double h_;
     int order_;
+    HistoryKernel kernel_;
+    double newestWeight_;
     std::vector<Vec3> values_;    ///< ρ_0 … ρ_n
-    std::vector<double> weights_; ///< c_k, extended as n grows
+    std::vector<double> weights_; ///< kernelWeight at lag k, extended as n grows
 };
 
 /// Fixed-size description of the window + tail memory shared by every particle.
@@ -134,23 +157,29 @@ struct WindowTailLayout {
     std::size_t doubles() const { return 3 * (window + 1 + tail.size()); }
 };
 
-/// Production memory: a view on one particle's doubles (layout.doubles() of them).
+/// Production memory: a view on one particle's doubles (layout.doubles() of them). The layout
+/// is Basset's; the spin kernel takes its window weights and weights its tail terms per particle.
 class WindowTailHistory {
 public:
-    WindowTailHistory(const WindowTailLayout& layout, double* state)
-        : layout_(layout), state_(state) {}
-    double newestWeight() const { return layout_.windowWeights[0]; }
+    WindowTailHistory(const WindowTailLayout& layout, double* state, HistoryKernel kernel = {});
+    HistoryKernel kernel() const { return kernel_; }
+    double newestWeight() const { return windowWeights_[0]; }
     Vec3 beginStep(); ///< advances the tail sums to t_{n+1}; returns the known part of I_{n+1}
     void endStep(const Vec3& remainder);
+
+    static constexpr int largestWindow = 7; ///< far beyond any accuracy target in double
 
 private:
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
     const WindowTailLayout& layout_;
     double* state_;
+    HistoryKernel kernel_;
+    std::array<double, largestWindow + 1> windowWeights_{}; ///< as layout.windowWeights
 };
 
 /// No memory: the same step without a history force (added mass, pressure gradient, lift only).
 struct NoHistory {
+    HistoryKernel kernel() const { return {}; }
     double newestWeight() const { return 0; }
     Vec3 beginStep() { return Vec3::Zero(); }
     void endStep(const Vec3&) {}
