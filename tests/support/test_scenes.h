@@ -68,4 +68,25 @@ private:
     Vec3 offset_;
 };
 
+/// U = Ω × x for t < switchOff, at rest after: vorticity 2Ω then 0.
+class SwitchedVortex : public CarrierField {
+public:
+    SwitchedVortex(double rate, double switchOff) : rate_(rate), switchOff_(switchOff) {}
+    void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
+                CarrierSample& out) const override {
+        out.resize(points.size(), needs);
+        const double rate = time < switchOff_ ? rate_ : 0.0;
+        Mat3 gradient;
+        gradient << 0, -rate, 0, rate, 0, 0, 0, 0, 0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            out.velocity[i] = gradient * points[i];
+            if (needs.velocityGradient) out.velocityGradient[i] = gradient;
+        }
+    }
+    std::string describe() const override { return "switched vortex"; }
+
+private:
+    double rate_, switchOff_;
+};
+
 } // namespace slides::test

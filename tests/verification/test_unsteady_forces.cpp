@@ -72,27 +72,6 @@ TEST(NeutrallyBuoyantTracer, FollowsARotatingStrainingFlow) {
     EXPECT_GT(lagging, 0.05);
 }
 
-/// U = Ω × x for t < switchOff, at rest after: vorticity 2Ω then 0.
-class SwitchedVortex : public CarrierField {
-public:
-    SwitchedVortex(double rate, double switchOff) : rate_(rate), switchOff_(switchOff) {}
-    void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
-                CarrierSample& out) const override {
-        out.resize(points.size(), needs);
-        const double rate = time < switchOff_ ? rate_ : 0.0;
-        Mat3 gradient;
-        gradient << 0, -rate, 0, rate, 0, 0, 0, 0, 0;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            out.velocity[i] = gradient * points[i];
-            if (needs.velocityGradient) out.velocityGradient[i] = gradient;
-        }
-    }
-    std::string describe() const override { return "switched vortex"; }
-
-private:
-    double rate_, switchOff_;
-};
-
 TEST(Spin, SpinsUpInAVortexAndDownAfterItAsEquation318) {
     // I dω/dt = −8πμR³(ω − Ω): τ_ω = (2/5) m R² / (8πμR³), computed here from the masses;
     // ω_z(T0) = Ω(1 − e^{−T0/τ_ω}), then ω_z(t) = ω_z(T0) e^{−(t − T0)/τ_ω}. The spin step is
@@ -111,7 +90,7 @@ TEST(Spin, SpinsUpInAVortexAndDownAfterItAsEquation318) {
     const double switchOff = 100.5 * h;
     scene.time.dt = h;
     scene.time.endTime = 200 * h;
-    const SwitchedVortex vortex(rate, switchOff);
+    const test::SwitchedVortex vortex(rate, switchOff);
     Stepper stepper(scene, vortex);
     const auto& cloud = stepper.cloud();
     while (!stepper.finished()) stepper.step();
@@ -214,13 +193,14 @@ Scene readDefaultCaseWithPhysics(const std::string& physics) {
 const char* fullPhysics = R"(
     drag haiderLevenspiel; gravity (0 -9.81 0);
     history { model basset; accuracy 1e-4; }
-    addedMass on; pressureGradient on; lift saffmanMeiMagnus; spin on;)";
+    addedMass on; pressureGradient on; lift saffmanMeiMagnus; spin on; spinHistory on;)";
 
-TEST(UnsteadyKeys, ReachTheSceneAndMagnusNeedsSpin) {
+TEST(UnsteadyKeys, ReachTheSceneAndMagnusAndSpinHistoryNeedSpin) {
     const Scene scene = readDefaultCaseWithPhysics(fullPhysics);
     EXPECT_EQ(scene.physics.history, HistoryModel::basset);
     EXPECT_DOUBLE_EQ(scene.physics.historyAccuracy, 1e-4);
-    EXPECT_TRUE(scene.physics.addedMass && scene.physics.pressureGradient && scene.physics.spin);
+    EXPECT_TRUE(scene.physics.addedMass && scene.physics.pressureGradient && scene.physics.spin &&
+                scene.physics.spinHistory);
     EXPECT_EQ(scene.physics.lift, LiftModel::saffmanMeiMagnus);
     // Spin left to auto follows Magnus lift; spin set off with Magnus lift is an error.
     EXPECT_TRUE(readDefaultCaseWithPhysics("lift magnus;").physics.spin);
@@ -230,6 +210,16 @@ TEST(UnsteadyKeys, ReachTheSceneAndMagnusNeedsSpin) {
         ADD_FAILURE() << "magnus lift without spin was accepted";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("physics.lift"), std::string::npos)
+            << error.what();
+    }
+    // The spin's history (Eq. 3.19) turns auto spin on, and refuses spin off.
+    const Scene spinning = readDefaultCaseWithPhysics("lift none; spinHistory on;");
+    EXPECT_TRUE(spinning.physics.spin && spinning.physics.spinHistory);
+    try {
+        readDefaultCaseWithPhysics("spin off; spinHistory on;");
+        ADD_FAILURE() << "the spin's history without spin was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("physics.spinHistory"), std::string::npos)
             << error.what();
     }
 }

@@ -103,6 +103,7 @@ struct PhysicsSettings {
     bool pressureGradient = false;
     LiftModel lift = LiftModel::none;
     bool spin = false;
+    bool spinHistory = false; ///< the unsteady torque of Eq. 3.19 (needs spin)
     DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
     DispersionConstants dispersionConstants;
     HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h

@@ -206,6 +206,10 @@ std::vector<KeyDeclaration> declareKeys() {
         {"physics.spin", K::switchOrAuto, "-", "auto", {}, R::any,
          "Particle spin under the viscous torque of Eq. 3.18, relaxing to half the vorticity; "
          "auto: on exactly when Magnus lift is."},
+        {"physics.spinHistory", K::boolean, "-", "off", {}, R::any,
+         "The spin's unsteady torque (Eq. 3.19, Feuillebois & Lasek): the history of the spin "
+         "relative to the fluid, window + exponential tail to physics.history.accuracy; turns "
+         "spin on."},
         {"physics.autoThreshold", K::scalar, "-", "0.01", {}, R::positive,
          "A term set to auto is turned off when the scene analysis estimates its effect below "
          "this: the velocity change it drives over the largest gas or particle speed, or the "

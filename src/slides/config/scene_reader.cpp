@@ -328,9 +328,13 @@ void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
     }
     if (usesSpinLift(physics.lift) && spin == false)
         keys.fail("physics.lift", "magnus lift needs the particle spin: set physics.spin on");
-    // Spin only matters to Magnus lift: auto follows it (given, or as the analysis decides).
-    physics.spin = spin.value_or(usesSpinLift(physics.lift));
-    if (!spin && !lift) automatic.push_back({PhysicsTerm::spin, ""});
+    physics.spinHistory = keys.boolean("physics.spinHistory");
+    if (physics.spinHistory && spin == false)
+        keys.fail("physics.spinHistory", "the spin's history needs the spin: set physics.spin on");
+    // Spin matters to Magnus lift and to its own history: auto follows them (given, or as the
+    // analysis decides for Magnus lift).
+    physics.spin = spin.value_or(usesSpinLift(physics.lift) || physics.spinHistory);
+    if (!spin && !lift && !physics.spinHistory) automatic.push_back({PhysicsTerm::spin, ""});
 }
 
 /// physics.dispersion and physics.heatTransfer with what they need from the other sections.

@@ -21,12 +21,40 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     width_ = 4; // age, v_{n−1}
-    if (physics.history == HistoryModel::basset) {
-        history_ =
-            WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
+    history_ = physics.history == HistoryModel::basset;
+    spinHistory_ = physics.spin && physics.spinHistory;
+    if (!history_ && !spinHistory_) return;
+    memory_ = WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
+    if (history_) {
         historyOffset_ = width_;
-        width_ += 6 + history_->doubles(); // s0, I_n, memory
+        width_ += 6 + memory_->doubles(); // s0, I_n, memory
     }
+    if (spinHistory_) {
+        spinHistoryOffset_ = width_;
+        width_ += 6 + memory_->doubles(); // σ0, I_n, memory
+    }
+}
+
+Vec3 MaxeyRileyStepper::spinWithHistory(double* state, double age, const Vec3& spin,
+                                        const Vec3& rotationStart, const Vec3& rotationEnd,
+                                        double radius, double h) const {
+    const double viscosity = scene_.fluid.kinematicViscosity;
+    const double responseTime =
+        spinResponseTime(scene_.particles.density, scene_.fluid.density, viscosity, radius);
+    const HistoryKernel kernel{radius * radius / viscosity};
+    SlipStep step;
+    step.h = h;
+    step.dragRate = 1.0 / responseTime;
+    step.historyRate = spinHistoryRate(responseTime, kernel.viscousTime);
+    step.gasStart = rotationStart;
+    step.gasEnd = rotationEnd;
+    Eigen::Map<Vec3> startSlip(state), integral(state + 3);
+    if (age == 0) startSlip = rotationStart - spin; // released now, into fluid at rest
+    HistoryStart start{startSlip, age, integral};
+    WindowTailHistory memory(*memory_, state + 6, kernel);
+    const Vec3 next = advanceWithHistory(step, spin, start, memory).velocity;
+    integral = start.integral;
+    return next;
 }
 
 void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasStart,
@@ -118,7 +146,11 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             if (scene_.physics.spin) {
                 Vec3& spin = cloud.angularVelocity[static_cast<std::size_t>(i)];
                 spinStart = spin;
-                spin = relaxSpin(spin, 0.5 * (vorticity0 + vorticity1),
+                spin = spinHistory_
+                           ? spinWithHistory(state + spinHistoryOffset_, state[0], spin,
+                                             0.5 * vorticity0, 0.5 * vorticity1, radius, step.h)
+                           : relaxSpin(
+                                 spin, 0.5 * (vorticity0 + vorticity1),
                                  spinResponseTime(particleDensity, fluidDensity, viscosity, radius),
                                  step.h);
                 spinEnd = spin;
@@ -138,7 +170,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             double* historyState = state + historyOffset_;
             Eigen::Map<Vec3> startSlip(historyState), integral(historyState + 3);
             HistoryStart start{startSlip, state[0], integral};
-            WindowTailHistory memory(*history_, historyState + 6);
+            WindowTailHistory memory(*memory_, historyState + 6);
             result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
             integral = start.integral;
         } else {

@@ -13,16 +13,17 @@
 //   2. v_{n+1} from the trapezoid rule with the history term implicit in v_{n+1}
 //      (physics/history_integrator.h), τ of the nonlinear drag frozen at the predicted midpoint
 //      slip, added mass in the effective mass (physics/unsteady.h), fluid acceleration, gravity
-//      and lift (physics/lift.h) by the trapezoid rule; spin relaxed exactly (physics/spin.h).
+//      and lift (physics/lift.h) by the trapezoid rule; spin relaxed exactly (physics/spin.h),
+//      or, with its history (Eq. 3.19), by the same implicit history step on σ = ½∇×U − ω.
 // Order 2; the trapezoid rule keeps the stiff drag stable for any h/τ (A-stable, though not
 // L-stable: for h ≫ τ the slip decays in alternating steps). The history weights assume the
 // step dt; a particle injected inside a step (shorter first step) or the run's shortened last
 // step makes an O(h²) error there. Per-particle state lives in ParticleCloud::modelState: age,
-// w_{n−1}, then the history start s0, I_n and the window + tail memory, each only
-// when its term is on.
+// w_{n−1}, then the history start s0, I_n and the window + tail memory, and the same three for
+// the spin's history, each only when its term is on.
 //
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;
-//               lift saffmanMei; spin on; }
+//               lift saffmanMei; spin on; spinHistory on; }
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
@@ -57,14 +58,20 @@ public:
                  const std::vector<double>& stepLengths);
 
 private:
+    /// ω after a step of h under the steady and history torques of Eq. 3.19, with the fluid
+    /// rotation ½∇×U at its start and end; state holds σ0, I_n and the memory.
+    Vec3 spinWithHistory(double* state, double age, const Vec3& spin, const Vec3& rotationStart,
+                         const Vec3& rotationEnd, double radius, double h) const;
+
     const Scene& scene_;
     DragParameters drag_;
     FluidInertia inertia_;
     Vec3 bodyAcceleration_;
     double fluidAccelerationFactor_;
     CarrierNeeds needs_;
-    std::optional<WindowTailLayout> history_;
-    std::size_t historyOffset_ = 0, width_ = 0;
+    std::optional<WindowTailLayout> memory_; ///< of both histories, when either is on
+    bool history_ = false, spinHistory_ = false;
+    std::size_t historyOffset_ = 0, spinHistoryOffset_ = 0, width_ = 0;
 
     CarrierSample gasEnd_;
     std::vector<Vec3> predicted_;           ///< x* of each particle

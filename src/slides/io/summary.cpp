@@ -118,6 +118,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"pressureGradient", scene.physics.pressureGradient},
         {"lift", nameOf(liftModelNames(), scene.physics.lift)},
         {"spin", scene.physics.spin},
+        {"spinHistory", scene.physics.spinHistory},
         {"autoThreshold", scene.physics.autoThreshold},
         {"dispersion",
          {{"model", nameOf(dispersionModelNames(), scene.physics.dispersion)},
