@@ -1,7 +1,7 @@
 // Cost per particle-step and memory per particle of the unsteady terms, on the analytic jet of
 // the default case: drag only (exponentialMidpoint), drag + Basset history (window + exponential
 // tail, accuracy 1e-3), and the full Maxey–Riley equation (history, added mass, pressure
-// gradient, Saffman–Mei + Magnus lift, spin).
+// gradient, Saffman–Mei + Magnus lift, spin), and the same with the spin's history (Eq. 3.19).
 //
 //     build/tools/bench/bench_history --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; bytes_per_particle counts the kinematic arrays
@@ -16,7 +16,7 @@
 
 namespace {
 
-enum Variant { dragOnly, dragHistory, fullMaxeyRiley };
+enum Variant { dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory };
 
 void unsteadyCost(benchmark::State& state) {
     slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
@@ -25,10 +25,11 @@ void unsteadyCost(benchmark::State& state) {
     const auto variant = static_cast<Variant>(state.range(1));
     auto& physics = scene.physics;
     if (variant != dragOnly) physics.history = slides::HistoryModel::basset;
-    if (variant == fullMaxeyRiley) {
+    if (variant >= fullMaxeyRiley) {
         physics.addedMass = physics.pressureGradient = physics.spin = true;
         physics.lift = slides::LiftModel::saffmanMeiMagnus;
     }
+    physics.spinHistory = variant == fullWithSpinHistory;
     const auto carrier = slides::makeCarrier(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone
@@ -41,13 +42,14 @@ void unsteadyCost(benchmark::State& state) {
     state.counters["bytes_per_particle"] =
         static_cast<double>(sizeof(slides::ParticleId) + 2 * sizeof(slides::Vec3) + sizeof(double) +
                             cloud.stateWidth * sizeof(double));
-    state.SetLabel(variant == dragOnly      ? "drag only"
-                   : variant == dragHistory ? "drag + history"
-                                            : "full Maxey-Riley");
+    state.SetLabel(variant == dragOnly         ? "drag only"
+                   : variant == dragHistory    ? "drag + history"
+                   : variant == fullMaxeyRiley ? "full Maxey-Riley"
+                                               : "full + spin history");
 }
 
 BENCHMARK(unsteadyCost)
-    ->ArgsProduct({{1000, 10000}, {dragOnly, dragHistory, fullMaxeyRiley}})
+    ->ArgsProduct({{1000, 10000}, {dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory}})
     ->ArgNames({"particles", "variant"})
     ->UseRealTime()
     ->Unit(benchmark::kMicrosecond);

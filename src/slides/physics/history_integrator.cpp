@@ -11,12 +11,13 @@ namespace {
 
 constexpr double rootPi = 1.7724538509055160273; // √π
 
-/// g_m(x) = Σ_{k≥m} (−x)^(k−m) / Γ(1 + k/2), m = 0 … 4: e^{x²}erfc(x) = g_0 and the remainders
-/// g_m = 1/Γ(1 + m/2) − x g_{m+1} that the start-mode integrals and the spin kernel's weights need.
-std::array<double, 5> erfcSeriesRemainders(double x) {
-    constexpr std::size_t orders = 5;
+/// g_m(x) = Σ_{k≥m} (−x)^(k−m) / Γ(1 + k/2), m = 0 … orders − 1: e^{x²}erfc(x) = g_0 and the
+/// remainders g_m = 1/Γ(1 + m/2) − x g_{m+1} that the start-mode integrals (m ≤ 2) and the spin
+/// kernel's weights (m ≤ 4) need.
+template <std::size_t orders> std::array<double, orders> erfcSeriesRemainders(double x) {
+    constexpr std::size_t terms = 30;
     static const auto inverseGamma = [] {
-        std::array<double, 48> table{};
+        std::array<double, terms + orders> table{};
         for (std::size_t k = 0; k < table.size(); ++k)
             table[k] = 1.0 / std::tgamma(1.0 + 0.5 * static_cast<double>(k));
         return table;
@@ -27,16 +28,15 @@ std::array<double, 5> erfcSeriesRemainders(double x) {
         for (std::size_t m = 1; m < orders; ++m) g[m] = (inverseGamma[m - 1] - g[m - 1]) / x;
         return g;
     }
-    // Power series: terms fall by ≥ 2 per order for x < 0.5; 40 terms reach round-off.
-    constexpr std::size_t terms = 40;
-    for (std::size_t m = 0; m < orders; ++m) {
-        double power = 1, sum = 0;
-        for (std::size_t k = m; k < m + terms; ++k) {
-            sum += power * inverseGamma[k];
-            power *= -x;
-        }
-        g[m] = sum;
+    // For x < 0.5: the power series of the last g (term k below 0.5^k/Γ(1 + k/2), under 1e-17
+    // of the first after 30 terms), then the recursion downwards, which multiplies errors by x.
+    double power = 1, sum = 0;
+    for (std::size_t k = orders - 1; k < orders - 1 + terms; ++k) {
+        sum += power * inverseGamma[k];
+        power *= -x;
     }
+    g[orders - 1] = sum;
+    for (std::size_t m = orders - 1; m-- > 0;) g[m] = inverseGamma[m] - x * g[m + 1];
     return g;
 }
 
@@ -60,7 +60,7 @@ EndWeights boundedPartWeights(long p, double h, double viscousTime) {
     if (p == 0) {
         // ∫_0^U ψ = U g_2 and ∫_0^U u ψ du = U²(1 − g_4 − x g_3), x = √U, without cancellation.
         const double x = std::sqrt(span);
-        const auto g = erfcSeriesRemainders(x);
+        const auto g = erfcSeriesRemainders<5>(x);
         const double zeroth = span * g[2], first = span * span * (1 - g[4] - x * g[3]);
         const double older = first / span;
         return {scale * (zeroth - older), scale * older};
@@ -94,7 +94,7 @@ double scaledComplementaryError(double x) {
 
 StartMode startMode(double alpha, double age) {
     const double rootAge = std::sqrt(age);
-    const auto g = erfcSeriesRemainders(alpha * rootAge);
+    const auto g = erfcSeriesRemainders<3>(alpha * rootAge);
     return {g[0], age * g[2], rootPi * rootAge * g[1]};
 }
 
@@ -104,7 +104,7 @@ StartMode spinStartMode(double historyRate, double viscousTime, double age) {
     const double b = historyRate * std::sqrt(std::numbers::pi * viscousTime);
     const double c = (1 + b) / std::sqrt(viscousTime);
     const double rootAge = std::sqrt(age);
-    const auto g = erfcSeriesRemainders(c * rootAge);
+    const auto g = erfcSeriesRemainders<3>(c * rootAge);
     return {(1 + b * g[0]) / (1 + b), age * (1 + b * g[2]) / (1 + b), rootPi * rootAge * g[1]};
 }
 
@@ -218,11 +218,13 @@ WindowTailHistory::WindowTailHistory(const WindowTailLayout& layout, double* sta
                                      HistoryKernel kernel)
     : layout_(layout), state_(state), kernel_(kernel) {
     const int window = layout.window;
-    for (int k = 0; k <= window; ++k) {
-        const auto at = static_cast<std::size_t>(k);
-        windowWeights_[at] = kernel.viscousTime == 0 ? layout.windowWeights[at]
-                             : k < window            ? kernelWeight(2, k, layout.h, kernel)
-                                                     : kernelEndWeight(2, k, layout.h, kernel);
+    std::copy_n(layout.windowWeights.begin(), window + 1, windowWeights_.begin());
+    if (kernel.viscousTime == 0) return;
+    // Less the bounded part: step p's newer end weighs on lag p, its older end on lag p + 1.
+    for (int p = 0; p < window; ++p) {
+        const EndWeights step = boundedPartWeights(p, layout.h, kernel.viscousTime);
+        windowWeights_[static_cast<std::size_t>(p)] -= step.newer;
+        windowWeights_[static_cast<std::size_t>(p + 1)] -= step.older;
     }
 }
 
