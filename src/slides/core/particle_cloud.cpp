@@ -4,17 +4,6 @@
 
 namespace slides {
 
-namespace {
-
-/// Moves the last entry of a model-state array into index, if the model is on.
-template <typename T> void removeModelState(std::vector<T>& state, std::size_t index) {
-    if (state.empty()) return;
-    state[index] = state.back();
-    state.pop_back();
-}
-
-} // namespace
-
 void ParticleCloud::reserve(std::size_t count) {
     id.reserve(count);
     position.reserve(count);
