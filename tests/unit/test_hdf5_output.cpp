@@ -14,6 +14,8 @@
 
 #include <array>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -210,6 +212,35 @@ TEST_F(Hdf5Output, FrameCarriesPositionAndExactlyTheSelectedFields) {
     for (const char* name : {"id", "diameter", "speed"})
         EXPECT_FALSE(file.exists(std::string("/frames/000000/") + name)) << name;
     EXPECT_EQ(file.shape("/arrivals/position"), (std::vector<hsize_t>{0, 3}));
+}
+
+TEST_F(Hdf5Output, SpinIsADatasetInRadiansPerSecondOnlyWhereTracked) {
+    const KnownFrame known;
+    const std::vector<Vec3> spin{{1e4, -2, 0}, {0, 0, 1.0 / 7}, {-5e-3, 3e5, 1}};
+    ParticleFrame spinning = known.frame();
+    spinning.angularVelocity = spin;
+    {
+        ParticlesHdf5 output(directory_, "spin");
+        output.writeFrame(0.5, spinning);
+        output.writeFrame(1.0, known.frame());
+        output.finish({});
+    }
+    const Reader file(directory_ / "particles.h5");
+    ASSERT_TRUE(file.exists("/frames/000000/angularVelocity"));
+    EXPECT_EQ(file.shape("/frames/000000/angularVelocity"), (std::vector<hsize_t>{3, 3}));
+    EXPECT_EQ(file.text("/frames/000000/angularVelocity", "units"), "rad/s");
+    const auto values = file.values<double>("/frames/000000/angularVelocity", H5T_NATIVE_DOUBLE);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(values[3 * i + c], spin[i][c]);
+    EXPECT_FALSE(file.exists("/frames/000001/angularVelocity"));
+    // The index names it (a Vector) in the first frame only.
+    const std::string index = [&] {
+        std::ifstream in(directory_ / "particles.xmf");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    EXPECT_NE(index.find("<Attribute Name=\"angularVelocity\" AttributeType=\"Vector\""),
+              std::string::npos);
+    EXPECT_EQ(index.find("000001/angularVelocity"), std::string::npos);
 }
 
 /// Each DataItem of an XDMF document: its "file:/path" reference and declared dimensions.

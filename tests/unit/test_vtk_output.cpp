@@ -206,6 +206,33 @@ TEST_F(VtkOutput, FrameCarriesExactlyTheSelectedFields) {
     }
 }
 
+TEST_F(VtkOutput, FrameCarriesTemperatureAndSpinOnlyWhereTracked) {
+    // With heat transfer and spin the frame has both arrays, bit-exact; without them neither,
+    // though every field is asked for.
+    const KnownFrame known;
+    const std::vector<double> temperature{300, 1.0 / 3 + 400, 1e3};
+    const std::vector<Vec3> spin{{1e4, -2, 0}, {0, 0, 1.0 / 7}, {-5e-3, 3e5, 1}};
+    ParticleFrame frame = known.frame();
+    frame.temperature = temperature;
+    frame.angularVelocity = spin;
+    writeParticlesVtp(directory_ / "tracked.vtp", frame);
+    writeParticlesVtp(directory_ / "untracked.vtp", known.frame());
+
+    const auto data = readVtp(directory_ / "tracked.vtp");
+    auto* heat = pointArray(data, "temperature", VTK_DOUBLE, 1);
+    auto* omega = pointArray(data, "angularVelocity", VTK_DOUBLE, 3);
+    ASSERT_TRUE(heat && omega);
+    for (vtkIdType n = 0; n < 3; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        EXPECT_EQ(heat->GetComponent(n, 0), temperature[i]);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(omega->GetComponent(n, c), spin[i][c]);
+    }
+    const auto plain = readVtp(directory_ / "untracked.vtp");
+    EXPECT_EQ(plain->GetPointData()->GetArray("temperature"), nullptr);
+    EXPECT_EQ(plain->GetPointData()->GetArray("angularVelocity"), nullptr);
+    EXPECT_EQ(plain->GetPointData()->GetNumberOfArrays(), 5);
+}
+
 TEST_F(VtkOutput, FrameWithMismatchedArraysIsRejected) {
     KnownFrame known;
     known.radius.pop_back();

@@ -280,6 +280,11 @@ const BrokenCase brokenCases[] = {
     {"unknownOutputField", "    interval            5e-4;",
      "    interval            5e-4;\n    fields (id speed pressure);", 1,
      "key 'output.fields': unknown fields 'pressure'; valid fields names are:"},
+    {"spinOutputWithoutSpin", "    interval            5e-4;",
+     "    interval            5e-4;\n    fields (id angularVelocity);\n}\n"
+     "physics { spin off; lift none; }\nsurfaces { target { type plane; point (0.05 0 0); "
+     "normal (-1 0 0); interaction absorb; } }\noutput {",
+     1, "key 'output.fields': angularVelocity needs the particles' spin"},
     {"nozzleOutsideDomain", "    centre      (0 0 0);", "    centre      (1 0 0);", 0,
      "key 'nozzle.centre': lies outside the domain box"},
     {"softSphereWithVelocityDependentRestitution", "    buoyancy    on;\n}\n",

@@ -21,6 +21,7 @@
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -159,5 +160,14 @@ struct Scene {
     bool domainFromCarrier = false; ///< no domain given: the carrier's bounds (a mesh) set it
     OutputSettings output;
 };
+
+/// Whether the particles carry a spin ω: physics.spin, or contacts with friction (collisions,
+/// surfaces that rebound or deposit) that change it.
+inline bool tracksSpin(const Scene& scene) {
+    return scene.physics.spin || scene.collisions.model != CollisionModel::none ||
+           std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const PlaneSurface& s) {
+               return s.interaction != SurfaceInteraction::absorb;
+           });
+}
 
 } // namespace slides

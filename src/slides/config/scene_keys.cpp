@@ -325,9 +325,12 @@ std::vector<KeyDeclaration> declareKeys() {
          "Time between particle frames (particles_NNNNNN.vtp)."},
         {"output.carrierResolution", K::integerTriple, "-", "(96 48 48)", {}, R::atLeastOne,
          "Lattice points per axis of carrier.vti over the domain."},
-        {"output.fields", K::wordList, "-", "(id diameter velocity speed state temperature)",
+        {"output.fields", K::wordList, "-",
+         "(id diameter velocity speed state temperature angularVelocity)",
          namesOf(particleFieldNames()), R::any,
-         "Point arrays of each particle frame; temperature only with physics.heatTransfer."},
+         "Point arrays of each particle frame; temperature only with physics.heatTransfer, "
+         "angularVelocity [rad/s] only where the particles spin (physics.spin, collisions, or a "
+         "surface that rebounds or deposits)."},
         {"output.hdf5", K::boolean, "-", "yes", {}, R::any,
          "Also write every frame and the arrivals to particles.h5, indexed by particles.xmf."},
     };

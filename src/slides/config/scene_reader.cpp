@@ -649,6 +649,14 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     if (keys.has("output.fields") && scene.output.fields.contains(ParticleField::temperature) &&
         scene.physics.heatTransfer == HeatTransferModel::none)
         keys.fail("output.fields", "temperature needs physics.heatTransfer.model");
+    const auto& automatic = scene.physics.automaticTerms;
+    const bool spinMayTurnOn = std::any_of(automatic.begin(), automatic.end(), [](const auto& a) {
+        return a.term == PhysicsTerm::spin || a.term == PhysicsTerm::spinLift;
+    });
+    if (keys.has("output.fields") && scene.output.fields.contains(ParticleField::angularVelocity) &&
+        !tracksSpin(scene) && !spinMayTurnOn)
+        keys.fail("output.fields", "angularVelocity needs the particles' spin: physics.spin on, "
+                                   "collisions, or a surface that rebounds or deposits");
     return scene;
 }
 

@@ -31,10 +31,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
     }
     if (scene.collisions.model == CollisionModel::impulse) collisions_.emplace(scene);
     if (scene.collisions.model == CollisionModel::softSphere) softSpheres_.emplace(scene);
-    tracksSpin_ = scene.physics.spin || collisions_ || softSpheres_ ||
-                  std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const auto& s) {
-                      return s.interaction != SurfaceInteraction::absorb;
-                  });
+    tracksSpin_ = tracksSpin(scene);
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
 

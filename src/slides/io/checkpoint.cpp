@@ -98,7 +98,7 @@ struct ArrivalColumns {
     std::vector<std::uint64_t> id;
     std::vector<std::int32_t> surface;
     std::vector<double> time, radius, temperature;
-    std::vector<Vec3> position, velocity;
+    std::vector<Vec3> position, velocity, angularVelocity;
 
     template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
         visit("id", c.id);
@@ -108,6 +108,7 @@ struct ArrivalColumns {
         visit("velocity", c.velocity);
         visit("radius", c.radius);
         visit("temperature", c.temperature);
+        visit("angularVelocity", c.angularVelocity);
     }
 };
 
@@ -158,6 +159,7 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
         arrivals.position.push_back(arrival.position);
         arrivals.velocity.push_back(arrival.velocity);
         arrivals.temperature.push_back(arrival.temperature);
+        arrivals.angularVelocity.push_back(arrival.angularVelocity);
     }
     const Hdf5Handle arrived = file.createGroup(std::string(group) + "/arrivals");
     ArrivalColumns::forEach(arrivals, [&](const char* name, const auto& array) {
@@ -236,7 +238,8 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
     for (std::size_t i = 0; i < arrivals.id.size(); ++i)
         state.arrivals.push_back({arrivals.id[i], arrivals.surface.at(i), arrivals.time.at(i),
                                   arrivals.position.at(i), arrivals.velocity.at(i),
-                                  arrivals.radius.at(i), arrivals.temperature.at(i)});
+                                  arrivals.radius.at(i), arrivals.temperature.at(i),
+                                  arrivals.angularVelocity.at(i)});
     if (file.exists(g + "/springs")) {
         SpringColumns springs;
         SpringColumns::forEach(springs, [&](const char* name, auto& array) {

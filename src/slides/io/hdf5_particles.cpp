@@ -45,7 +45,8 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     const std::size_t count = frame.id.size();
     if (frame.position.size() != count || frame.velocity.size() != count ||
         frame.radius.size() != count || frame.state.size() != count ||
-        (frame.temperature && frame.temperature->size() != count))
+        (frame.temperature && frame.temperature->size() != count) ||
+        (frame.angularVelocity && frame.angularVelocity->size() != count))
         throw std::invalid_argument("particle frame arrays differ in length");
     const std::string group = frameGroup(frames_.size());
     const Hdf5File& file = *file_;
@@ -69,10 +70,12 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     if (has(ParticleField::state)) file.writeDataset(g, "state", frame.state, "1");
     if (frame.temperature && has(ParticleField::temperature))
         file.writeDataset(g, "temperature", *frame.temperature, 1, "K");
+    if (frame.angularVelocity && has(ParticleField::angularVelocity))
+        file.writeDataset(g, "angularVelocity", *frame.angularVelocity, "rad/s");
     file.flush();
-    frames_.push_back(
-        {group, time, count,
-         frame.temperature ? frame.fields : frame.fields.without(ParticleField::temperature)});
+    frames_.push_back({group, time, count,
+                       presentFields(frame.fields, frame.temperature.has_value(),
+                                     frame.angularVelocity.has_value())});
 }
 
 void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {

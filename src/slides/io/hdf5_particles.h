@@ -14,6 +14,7 @@
 //       speed      float64 (N)     [m/s]
 //       state      int32 (N)       0 moving, 1 arrived (frozen where it touched)
 //       temperature float64 (N)    [K], with heat transfer
+//       angularVelocity float64 (N, 3) [rad/s], where the particles spin (scene.h tracksSpin)
 //   /arrivals            written when the run ends, one row per particle that reached a
 //                        surface: id, surface (index into the case's surfaces), time [s],
 //                        position [m], velocity [m/s], diameter [m]

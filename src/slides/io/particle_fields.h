@@ -1,6 +1,7 @@
 // ParticleField: the point arrays a particle frame (.vtp) can carry, chosen by
-// `output { fields (id diameter velocity speed state temperature); }` (default: all of them;
-// temperature exists only with heat transfer, physics/heat_transfer.h).
+// `output { fields (id diameter velocity speed state temperature angularVelocity); }` (default:
+// all of them; temperature exists only with heat transfer, physics/heat_transfer.h, and
+// angularVelocity only where the particles carry a spin, config/scene.h tracksSpin).
 #pragma once
 
 #include <array>
@@ -9,20 +10,21 @@
 
 namespace slides {
 
-enum class ParticleField { id, diameter, velocity, speed, state, temperature };
+enum class ParticleField { id, diameter, velocity, speed, state, temperature, angularVelocity };
 
 struct ParticleFieldName {
     ParticleField value;
     std::string_view name;
 };
 
-constexpr std::array<ParticleFieldName, 6> particleFieldNames() {
+constexpr std::array<ParticleFieldName, 7> particleFieldNames() {
     return {{{ParticleField::id, "id"},
              {ParticleField::diameter, "diameter"},
              {ParticleField::velocity, "velocity"},
              {ParticleField::speed, "speed"},
              {ParticleField::state, "state"},
-             {ParticleField::temperature, "temperature"}}};
+             {ParticleField::temperature, "temperature"},
+             {ParticleField::angularVelocity, "angularVelocity"}}};
 }
 
 /// A subset of the particle fields.
@@ -47,5 +49,12 @@ public:
 private:
     std::bitset<particleFieldNames().size()> bits_;
 };
+
+/// The fields of `asked` that a frame has: temperature only with heating, ω only with spin.
+inline ParticleFieldSet presentFields(ParticleFieldSet asked, bool heating, bool spinning) {
+    if (!heating) asked = asked.without(ParticleField::temperature);
+    if (!spinning) asked = asked.without(ParticleField::angularVelocity);
+    return asked;
+}
 
 } // namespace slides

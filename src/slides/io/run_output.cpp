@@ -56,7 +56,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
     : directory_(
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
       scene_(scene), series_(directory_ / "particles.pvd"), fields_(scene.output.fields),
-      heating_(scene.physics.heatTransfer != HeatTransferModel::none) {
+      heating_(scene.physics.heatTransfer != HeatTransferModel::none),
+      spinning_(tracksSpin(scene)) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -64,8 +65,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
             series.emplace_back(frames_[n].time, frameFileName(n));
         series_.resume(series);
         if (scene.output.hdf5)
-            hdf5_.emplace(directory_, frames_,
-                          heating_ ? fields_ : fields_.without(ParticleField::temperature));
+            hdf5_.emplace(directory_, frames_, presentFields(fields_, heating_, spinning_));
     } else if (scene.output.hdf5) {
         hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
     }
@@ -87,6 +87,7 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     radii_.assign(cloud.radius.begin(), cloud.radius.end());
     states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
     temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
+    spins_.assign(cloud.angularVelocity.begin(), cloud.angularVelocity.end());
     for (const auto& arrival : stepper.arrivals()) {
         ids_.push_back(arrival.id);
         positions_.push_back(arrival.position);
@@ -94,10 +95,12 @@ void RunOutput::writeFrame(const Stepper& stepper) {
         radii_.push_back(arrival.radius);
         states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
         temperatures_.push_back(arrival.temperature);
+        spins_.push_back(arrival.angularVelocity);
     }
     const std::string name = frameFileName(frames_.size());
     ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
     if (heating_) frame.temperature = temperatures_;
+    if (spinning_) frame.angularVelocity = spins_;
     writeParticlesVtp(directory_ / name, frame);
     if (hdf5_) hdf5_->writeFrame(stepper.time(), frame);
     series_.add(stepper.time(), name);

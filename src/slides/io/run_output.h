@@ -60,7 +60,9 @@ private:
     std::vector<double> radii_;
     std::vector<std::int32_t> states_;
     bool heating_;                     ///< particles carry a temperature
+    bool spinning_;                    ///< particles carry a spin ω
     std::vector<double> temperatures_; ///< [K], with heat transfer
+    std::vector<Vec3> spins_;          ///< ω [rad/s], with spin
 };
 
 } // namespace slides

@@ -20,7 +20,8 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     const std::size_t size = frame.id.size();
     if (frame.position.size() != size || frame.velocity.size() != size ||
         frame.radius.size() != size || frame.state.size() != size ||
-        (frame.temperature && frame.temperature->size() != size))
+        (frame.temperature && frame.temperature->size() != size) ||
+        (frame.angularVelocity && frame.angularVelocity->size() != size))
         throw std::invalid_argument("writeParticlesVtp: the frame's arrays differ in length");
     const auto count = static_cast<vtkIdType>(size);
     vtkNew<vtkPoints> points;
@@ -64,6 +65,12 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
         for (vtkIdType i = 0; i < count; ++i)
             temperature->SetValue(i, (*frame.temperature)[static_cast<std::size_t>(i)]);
         add(ParticleField::temperature, temperature);
+    }
+    if (frame.angularVelocity) {
+        auto spin = namedDoubleArray("angularVelocity", 3, count);
+        for (vtkIdType i = 0; i < count; ++i)
+            spin->SetTypedTuple(i, (*frame.angularVelocity)[static_cast<std::size_t>(i)].data());
+        add(ParticleField::angularVelocity, spin);
     }
     data->SetActiveScalars("speed");
     data->SetActiveVectors("velocity");

@@ -26,7 +26,8 @@ struct ParticleFrame {
     std::span<const double> radius;                    ///< [m]
     std::span<const std::int32_t> state;               ///< ParticleState values
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
-    std::optional<std::span<const double>> temperature = std::nullopt; ///< [K]; none: no heating
+    std::optional<std::span<const double>> temperature = std::nullopt;   ///< [K]; none: no heating
+    std::optional<std::span<const Vec3>> angularVelocity = std::nullopt; ///< [rad/s]; none: no ω
 };
 
 /// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and

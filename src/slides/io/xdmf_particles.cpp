@@ -23,6 +23,7 @@ constexpr XdmfArray xdmfArrays[] = {
     {ParticleField::speed, "speed", "Scalar", "Float", 8, 1},
     {ParticleField::state, "state", "Scalar", "Int", 4, 1},
     {ParticleField::temperature, "temperature", "Scalar", "Float", 8, 1},
+    {ParticleField::angularVelocity, "angularVelocity", "Vector", "Float", 8, 3},
 };
 
 std::string dimensions(std::size_t count, int components) {

@@ -24,6 +24,8 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
     // A rebound can meet another surface, or the deposit, in the rest of the step.
     for (int contact = 0; contact < maxContactsPerStep; ++contact) {
         const ImpactResult impact = meetFirst(cloud, i, path, stepEnd, arrival);
+        if (impact == ImpactResult::arrived && !cloud.angularVelocity.empty())
+            arrival.angularVelocity = cloud.angularVelocity[i];
         if (impact == ImpactResult::arrived && temperature) {
             const double elapsed = 1 - (stepEnd - arrival.time) / stepLength;
             arrival.temperature = temperatureWithinStep(temperature->start, cloud.temperature[i],
