@@ -16,11 +16,11 @@
 //      and lift (physics/lift.h) by the trapezoid rule; spin relaxed exactly (physics/spin.h),
 //      or, with its history (Eq. 3.19), by the same implicit history step on σ = ½∇×U − ω.
 // Order 2; the trapezoid rule keeps the stiff drag stable for any h/τ (A-stable, though not
-// L-stable: for h ≫ τ the slip decays in alternating steps). The history weights assume the
-// step dt; a particle injected inside a step (shorter first step) or the run's shortened last
-// step makes an O(h²) error there. Per-particle state lives in ParticleCloud::modelState: age,
-// w_{n−1}, then the history start s0, I_n and the window + tail memory, and the same three for
-// the spin's history, each only when its term is on.
+// L-stable: for h ≫ τ the slip decays in alternating steps). The history weights take a
+// particle's shorter first step (released inside a step) at its length; they assume dt for all
+// later steps, so the run's shortened last step makes an O(h²) error there. Per-particle state
+// lives in ParticleCloud::modelState: age, w_{n−1}, then the history start s0, I_n and the window +
+// tail memory, and the same three for the spin's history, each only when its term is on.
 //
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;
 //               lift saffmanMei; spin on; spinHistory on; }

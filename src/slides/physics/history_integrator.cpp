@@ -49,15 +49,15 @@ double unitFirstMoment(double p) {
 double olderEndWeight(double p) { return unitFirstMoment(p) - p * unitKernelIntegral(p); }
 double newerEndWeight(double p) { return (p + 1) * unitKernelIntegral(p) - unitFirstMoment(p); }
 
-/// Weights of the newer (lag p h) and older (lag (p + 1) h) node of the spin kernel's bounded
+/// Weights of the newer (lag `lag`) and older (lag + length) node of the spin kernel's bounded
 /// part √(π/t_v) ψ(ℓ/t_v), ψ(U) = e^U erfc(√U), on that step with ρ linear on it [√s].
 struct EndWeights {
     double newer, older;
 };
-EndWeights boundedPartWeights(long p, double h, double viscousTime) {
-    const double span = h / viscousTime; // the step in U = ℓ/t_v
+EndWeights boundedPartWeights(double lag, double length, double viscousTime) {
+    const double start = lag / viscousTime, span = length / viscousTime; // in U = ℓ/t_v
     const double scale = std::sqrt(std::numbers::pi * viscousTime);
-    if (p == 0) {
+    if (lag == 0) {
         // ∫_0^U ψ = U g_2 and ∫_0^U u ψ du = U²(1 − g_4 − x g_3), x = √U, without cancellation.
         const double x = std::sqrt(span);
         const auto g = erfcSeriesRemainders<5>(x);
@@ -65,7 +65,8 @@ EndWeights boundedPartWeights(long p, double h, double viscousTime) {
         const double older = first / span;
         return {scale * (zeroth - older), scale * older};
     }
-    // ψ is analytic around [p, p + 1]·span, p ≥ 1: 8-point Gauss–Legendre errs below 1e-12.
+    // ψ is analytic around the step, which lies at least its length from U = 0: 8-point
+    // Gauss–Legendre errs below 1e-12.
     static constexpr std::array<double, 4> node{0.1834346424956498, 0.5255324099163290,
                                                 0.7966664774136267, 0.9602898564975363};
     static constexpr std::array<double, 4> weight{0.3626837833783620, 0.3137066458778873,
@@ -74,8 +75,7 @@ EndWeights boundedPartWeights(long p, double h, double viscousTime) {
     for (std::size_t i = 0; i < node.size(); ++i) {
         for (const double side : {-1.0, 1.0}) {
             const double fraction = 0.5 * (1 + side * node[i]); // 0 at the newer end
-            const double psi =
-                scaledComplementaryError(std::sqrt((static_cast<double>(p) + fraction) * span));
+            const double psi = scaledComplementaryError(std::sqrt(start + fraction * span));
             sum.newer += 0.5 * weight[i] * psi * (1 - fraction);
             sum.older += 0.5 * weight[i] * psi * fraction;
         }
@@ -122,10 +122,11 @@ double kernelWeight(int order, long lag, double h, HistoryKernel kernel) {
     double weight = std::sqrt(h) * productWeight(order, lag);
     if (kernel.viscousTime == 0) return weight;
     // Order 1: ρ constant on the step lag … lag + 1 at its newer value; order 2: linear.
-    const EndWeights step = boundedPartWeights(lag, h, kernel.viscousTime);
+    const auto lagged = static_cast<double>(lag);
+    const EndWeights step = boundedPartWeights(lagged * h, h, kernel.viscousTime);
     weight -= step.newer;
     if (order == 1) return weight - step.older;
-    if (lag > 0) weight -= boundedPartWeights(lag - 1, h, kernel.viscousTime).older;
+    if (lag > 0) weight -= boundedPartWeights((lagged - 1) * h, h, kernel.viscousTime).older;
     return weight;
 }
 
@@ -133,8 +134,36 @@ double kernelEndWeight(int order, long lag, double h, HistoryKernel kernel) {
     if (order == 1) return 0.0;
     const double weight = std::sqrt(h) * productEndWeight(order, lag);
     if (kernel.viscousTime == 0) return weight;
-    return weight - boundedPartWeights(lag - 1, h, kernel.viscousTime).older;
+    return weight -
+           boundedPartWeights(static_cast<double>(lag - 1) * h, h, kernel.viscousTime).older;
 }
+
+FirstStepWeights firstStepWeights(int order, double lag, double firstStep, HistoryKernel kernel) {
+    const double p = lag / firstStep, root = std::sqrt(firstStep);
+    FirstStepWeights weights =
+        order == 1 ? FirstStepWeights{root * unitKernelIntegral(p), 0.0}
+                   : FirstStepWeights{root * newerEndWeight(p), root * olderEndWeight(p)};
+    if (kernel.viscousTime == 0) return weights;
+    const EndWeights bounded = boundedPartWeights(lag, firstStep, kernel.viscousTime);
+    if (order == 1) return {weights.newer - bounded.newer - bounded.older, 0.0};
+    return {weights.newer - bounded.newer, weights.older - bounded.older};
+}
+
+namespace {
+
+/// The tail's weights for the step entering it, lags windowLength … windowLength + length, of
+/// ρ linear (newer end at the shorter lag) times a e^{−ℓ/θ}: P − Q on the newer, Q on the older
+/// value, P = θ(1 − e^{−z}), Q = θ(1 − e^{−z}(1 + z))/z, z = length/θ, times e^{−windowLength/θ}.
+EndWeights tailEntryWeights(double amplitude, double theta, double windowLength, double length) {
+    const double z = length / theta;
+    const double p = -theta * std::expm1(-z);
+    const double q = theta * (z < 1e-4 ? z / 2 - z * z / 3 + z * z * z / 8
+                                       : (-std::expm1(-z) - z * std::exp(-z)) / z);
+    const double scale = amplitude * std::exp(-windowLength / theta);
+    return {scale * (p - q), scale * q};
+}
+
+} // namespace
 
 ExponentialSum ExponentialSum::fit(double window, double horizon, double accuracy) {
     // Three error sources, each held to accuracy/3 relative to 1/√ℓ on [window, horizon]:
@@ -166,13 +195,31 @@ double ExponentialSum::operator()(double lag) const {
 }
 
 FullHistory::FullHistory(double h, int order, const Vec3& startRemainder, HistoryKernel kernel)
-    : h_(h), order_(order), kernel_(kernel),
-      newestWeight_(kernelWeight(order, 0, h, kernel)), values_{startRemainder} {}
+    : h_(h), order_(order), kernel_(kernel), values_{startRemainder} {}
 
-Vec3 FullHistory::beginStep() {
+Vec3 FullHistory::beginStep(double stepLength) {
     const long n = static_cast<long>(values_.size()) - 1; // values ρ_0 … ρ_n
+    if (n == 0) firstStep_ = stepLength;
     while (static_cast<long>(weights_.size()) <= n) {
         weights_.push_back(kernelWeight(order_, static_cast<long>(weights_.size()), h_, kernel_));
+    }
+    newestWeight_ = weights_[0];
+    if (firstStep_ != h_) {
+        // The first step [0, h'] lags n h behind t_{n+1}: ρ_1 (newest if n = 0) and ρ_0 take
+        // its weights for h' in place of those for h.
+        const double lag = static_cast<double>(n) * h_;
+        const FirstStepWeights actual = firstStepWeights(order_, lag, firstStep_, kernel_);
+        const double regular = firstStepWeights(order_, lag, h_, kernel_).newer;
+        if (n == 0) {
+            newestWeight_ += actual.newer - regular;
+            return actual.older * values_[0];
+        }
+        Vec3 sum = actual.older * values_[0] +
+                   (weights_[static_cast<std::size_t>(n)] + actual.newer - regular) * values_[1];
+        for (long j = 2; j <= n; ++j)
+            sum += weights_[static_cast<std::size_t>(n + 1 - j)] *
+                   values_[static_cast<std::size_t>(j)];
+        return sum;
     }
     Vec3 sum = kernelEndWeight(order_, n + 1, h_, kernel_) * values_[0];
     for (long j = 1; j <= n; ++j)
@@ -198,18 +245,11 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
         layout.windowWeights.push_back(rootH * productWeight(2, k));
     layout.windowWeights.push_back(rootH * productEndWeight(2, layout.window));
     for (std::size_t i = 0; i < layout.tail.size(); ++i) {
-        // ∫ over the interval entering the tail, lags windowLength … windowLength + h, of ρ
-        // linear (newer end at the shorter lag) times a e^{−ℓ/θ}: P − Q on the newer, Q on the
-        // older value, P = θ(1 − e^{−z}), Q = θ(1 − e^{−z}(1 + z))/z, z = h/θ.
         const double theta = layout.tail.timescale[i];
-        const double z = h / theta;
-        const double p = -theta * std::expm1(-z);
-        const double q = theta * (z < 1e-4 ? z / 2 - z * z / 3 + z * z * z / 8
-                                           : (-std::expm1(-z) - z * std::exp(-z)) / z);
-        const double scale = layout.tail.amplitude[i] * std::exp(-windowLength / theta);
-        layout.tailDecay.push_back(std::exp(-z));
-        layout.tailNewWeight.push_back(scale * (p - q));
-        layout.tailOldWeight.push_back(scale * q);
+        const EndWeights entry = tailEntryWeights(layout.tail.amplitude[i], theta, windowLength, h);
+        layout.tailDecay.push_back(std::exp(-h / theta));
+        layout.tailNewWeight.push_back(entry.newer);
+        layout.tailOldWeight.push_back(entry.older);
     }
     return layout;
 }
@@ -222,29 +262,51 @@ WindowTailHistory::WindowTailHistory(const WindowTailLayout& layout, double* sta
     if (kernel.viscousTime == 0) return;
     // Less the bounded part: step p's newer end weighs on lag p, its older end on lag p + 1.
     for (int p = 0; p < window; ++p) {
-        const EndWeights step = boundedPartWeights(p, layout.h, kernel.viscousTime);
+        const EndWeights step = boundedPartWeights(p * layout.h, layout.h, kernel.viscousTime);
         windowWeights_[static_cast<std::size_t>(p)] -= step.newer;
         windowWeights_[static_cast<std::size_t>(p + 1)] -= step.older;
     }
 }
 
-Vec3 WindowTailHistory::beginStep() {
-    // State: ρ at lags 0 … window, then the tail sums a_i F_i (amplitude folded in). The spin
-    // kernel's amplitudes are Basset's times t_v x_i/(1 + t_v x_i), x_i = 1/θ_i.
+Vec3 WindowTailHistory::beginStep(double stepLength) {
+    // State: ρ at lags 0 … window, then the tail sums a_i F_i (amplitude folded in), then the
+    // first step's length h' and the steps taken n. The spin kernel's amplitudes are Basset's
+    // times t_v x_i/(1 + t_v x_i), x_i = 1/θ_i.
     const int window = layout_.window;
+    double* tail = state_ + 3 * (window + 1);
+    double& firstStep = tail[3 * layout_.tail.size()];
+    const auto steps = static_cast<long>(tail[3 * layout_.tail.size() + 1]);
+    if (steps == 0) firstStep = stepLength;
+    const bool shortFirst = firstStep != layout_.h;
+    newestWeight_ = windowWeights_[0];
     const Vec3 leavingNewer = lagged(window - 1);
     const Vec3 leavingOlder = lagged(window);
     Vec3 known = windowWeights_[static_cast<std::size_t>(window)] * leavingNewer;
     for (int k = 1; k < window; ++k)
         known += windowWeights_[static_cast<std::size_t>(k)] * lagged(k - 1);
-    double* tail = state_ + 3 * (window + 1);
+    // A short first step: ρ_1 lags n h and takes the first step's weight for h' (ρ_0 = 0).
+    if (shortFirst && steps < window) {
+        const double lag = static_cast<double>(steps) * layout_.h;
+        const double correction = firstStepWeights(2, lag, firstStep, kernel_).newer -
+                                  firstStepWeights(2, lag, layout_.h, kernel_).newer;
+        if (steps == 0)
+            newestWeight_ += correction;
+        else
+            known += correction * lagged(static_cast<int>(steps) - 1);
+    }
+    const bool firstEntersTail = shortFirst && steps == window;
     const double viscousTime = kernel_.viscousTime;
     for (std::size_t i = 0; i < layout_.tail.size(); ++i) {
         const double spectrum =
             viscousTime == 0 ? 1.0 : viscousTime / (layout_.tail.timescale[i] + viscousTime);
         Eigen::Map<Vec3> term(tail + 3 * i);
-        term = layout_.tailDecay[i] * term + spectrum * (layout_.tailNewWeight[i] * leavingNewer +
-                                                         layout_.tailOldWeight[i] * leavingOlder);
+        const double newWeight =
+            firstEntersTail ? tailEntryWeights(layout_.tail.amplitude[i], layout_.tail.timescale[i],
+                                               window * layout_.h, firstStep)
+                                  .newer
+                            : layout_.tailNewWeight[i];
+        term = layout_.tailDecay[i] * term +
+               spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder);
         known += term;
     }
     return known;
@@ -254,6 +316,7 @@ void WindowTailHistory::endStep(const Vec3& remainder) {
     std::memmove(state_ + 3, state_, sizeof(double) * 3 * static_cast<std::size_t>(layout_.window));
     Eigen::Map<Vec3> newest(state_);
     newest = remainder;
+    state_[3 * (layout_.window + 1 + layout_.tail.size()) + 1] += 1; // steps taken
 }
 
 StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,
@@ -286,7 +349,7 @@ StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, Histor
     const Vec3 startIntegral = (after.integral - before.integral) * s0;
     const Vec3 startHistory = (after.history - before.history) * s0;
     const Vec3 remainderBefore = step.gasStart - velocity - before.value * s0;
-    const Vec3 known = memory.beginStep();
+    const Vec3 known = memory.beginStep(h);
     const double newestWeight = memory.newestWeight();
     // v_{n+1} = u_{n+1} − s0 φ_{n+1} − ρ_{n+1}, and ρ_{n+1} is the one unknown of
     //   v_{n+1} = v_n + (1/τ)[s0 ΔΦ + h((1−θ)ρ_n + θρ_{n+1})] + h((1−θ)a_n + θa_{n+1})

@@ -14,6 +14,9 @@
 // s = s0 φ(t) + ρ(t) with the start mode φ(t) = e^{α²t} erfc(α√t), α = √π r_H, whose √t term is
 // the exact one of the solution (v − v0 ≈ 2 r_H s0 √t); φ's integrals are closed form, and the
 // remainder ρ = O(t) with ρ(0) = 0 is integrated by the quadrature at full order.
+// A particle's first step may be shorter than the others (released inside a step): the nodes
+// are then t = 0, h', h' + h, …, and the first interval's weights, which fall on ρ_1 alone
+// (ρ_0 = 0), are taken for its length h' (the steps after it must all be h).
 // The same machinery integrates the spin's unsteady torque (Eq. 3.19, Feuillebois & Lasek 1978,
 // Q. J. Mech. Appl. Math. 31:435), whose kernel is 1/√ℓ less a bounded part (HistoryKernel).
 //
@@ -84,6 +87,12 @@ double productEndWeight(int order, long lag);
 /// the spin kernel's bounded part (closed form on the newest step, Gauss–Legendre beyond).
 double kernelWeight(int order, long lag, double h, HistoryKernel kernel);
 double kernelEndWeight(int order, long lag, double h, HistoryKernel kernel);
+/// Weights on the newer node (ρ_1) and the older one (ρ_0, order 2) of a particle's first
+/// step, of length firstStep, whose newer end lags `lag` [s] behind the integral's end [√s].
+struct FirstStepWeights {
+    double newer, older;
+};
+FirstStepWeights firstStepWeights(int order, double lag, double firstStep, HistoryKernel kernel);
 
 /// 1/√ℓ ≈ Σ_i amplitude_i e^{−ℓ/timescale_i} for ℓ in [window, horizon] with relative error
 /// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx.
@@ -128,9 +137,11 @@ public:
     FullHistory(double h, int order, const Vec3& startRemainder = Vec3::Zero(),
                 HistoryKernel kernel = {});
     HistoryKernel kernel() const { return kernel_; }
+    /// Weight of ρ_{n+1} in I_{n+1}, once beginStep has seen the step.
     double newestWeight() const { return newestWeight_; }
-    /// √h Σ_{k≥1} c_k ρ_{n+1−k}: the part of I_{n+1} known before ρ_{n+1}.
-    Vec3 beginStep();
+    /// √h Σ_{k≥1} c_k ρ_{n+1−k}: the part of I_{n+1} known before ρ_{n+1}, for a step of
+    /// length stepLength (h, or shorter on the first).
+    Vec3 beginStep(double stepLength);
     void endStep(const Vec3& remainder) { values_.push_back(remainder); }
     std::size_t bytes() const { return values_.capacity() * sizeof(Vec3); }
 
@@ -138,7 +149,8 @@ private:
     double h_;
     int order_;
     HistoryKernel kernel_;
-    double newestWeight_;
+    double newestWeight_ = 0;
+    double firstStep_ = 0;
     std::vector<Vec3> values_;    ///< ρ_0 … ρ_n
     std::vector<double> weights_; ///< kernelWeight at lag k, extended as n grows
 };
@@ -153,8 +165,9 @@ struct WindowTailLayout {
 
     /// Window and terms from the accuracy target (relative kernel error) for ages up to horizon.
     static WindowTailLayout make(double h, double horizon, double accuracy);
-    /// Doubles per particle: ρ at lags 0 … window, and one tail sum per term, 3 components each.
-    std::size_t doubles() const { return 3 * (window + 1 + tail.size()); }
+    /// Doubles per particle: ρ at lags 0 … window and one tail sum per term, 3 components each;
+    /// the first step's length and the steps taken.
+    std::size_t doubles() const { return 3 * (window + 1 + tail.size()) + 2; }
 };
 
 /// Production memory: a view on one particle's doubles (layout.doubles() of them). The layout
@@ -163,8 +176,9 @@ class WindowTailHistory {
 public:
     WindowTailHistory(const WindowTailLayout& layout, double* state, HistoryKernel kernel = {});
     HistoryKernel kernel() const { return kernel_; }
-    double newestWeight() const { return windowWeights_[0]; }
-    Vec3 beginStep(); ///< advances the tail sums to t_{n+1}; returns the known part of I_{n+1}
+    double newestWeight() const { return newestWeight_; }
+    /// Advances the tail sums to t_{n+1}; returns the known part of I_{n+1}.
+    Vec3 beginStep(double stepLength);
     void endStep(const Vec3& remainder);
 
     static constexpr int largestWindow = 7; ///< far beyond any accuracy target in double
@@ -175,13 +189,14 @@ private:
     double* state_;
     HistoryKernel kernel_;
     std::array<double, largestWindow + 1> windowWeights_{}; ///< as layout.windowWeights
+    double newestWeight_ = 0;
 };
 
 /// No memory: the same step without a history force (added mass, pressure gradient, lift only).
 struct NoHistory {
     HistoryKernel kernel() const { return {}; }
     double newestWeight() const { return 0; }
-    Vec3 beginStep() { return Vec3::Zero(); }
+    Vec3 beginStep(double) { return Vec3::Zero(); }
     void endStep(const Vec3&) {}
 };
 
