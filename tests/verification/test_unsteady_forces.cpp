@@ -147,18 +147,22 @@ Scene fullMaxeyRileyScene() {
     return scene;
 }
 
-/// The order of |x_N − x_2N| of the particle with the given id at the end, h = 0.2/50 … 0.2/1600.
-double selfConvergenceOrder(Scene scene, ParticleId id) {
+/// The particle's position at the end of the scene run with steps of endTime/steps.
+Vec3 finalPosition(Scene scene, long steps, ParticleId id) {
     const test::SwirlingStagnationFlow flow(5, 10, Vec3(1, 0.5, 0));
+    scene.time.dt = scene.time.endTime / static_cast<double>(steps);
+    Stepper stepper(scene, flow);
+    while (!stepper.finished()) stepper.step();
+    const auto& cloud = stepper.cloud();
+    const auto at = std::find(cloud.id.begin(), cloud.id.end(), id) - cloud.id.begin();
+    return cloud.position.at(static_cast<std::size_t>(at));
+}
+
+/// The order of |x_N − x_2N| of the particle with the given id at the end, h = 0.2/50 … 0.2/1600.
+double selfConvergenceOrder(const Scene& scene, ParticleId id) {
     std::vector<Vec3> positions;
-    for (long steps = 50; steps <= 1600; steps *= 2) {
-        scene.time.dt = scene.time.endTime / static_cast<double>(steps);
-        Stepper stepper(scene, flow);
-        while (!stepper.finished()) stepper.step();
-        const auto& cloud = stepper.cloud();
-        const auto at = std::find(cloud.id.begin(), cloud.id.end(), id) - cloud.id.begin();
-        positions.push_back(cloud.position.at(static_cast<std::size_t>(at)));
-    }
+    for (long steps = 50; steps <= 1600; steps *= 2)
+        positions.push_back(finalPosition(scene, steps, id));
     double order = 0;
     for (std::size_t k = 0; k + 2 < positions.size(); ++k) {
         const double coarse = (positions[k] - positions[k + 1]).norm();
@@ -177,17 +181,6 @@ TEST(FullMaxeyRiley, StepperKeepsSecondOrderUnderStepHalving) {
     const double order = selfConvergenceOrder(fullMaxeyRileyScene(), 0);
     EXPECT_GE(order, 1.8);
     EXPECT_LE(order, 2.2);
-}
-
-/// The particle's position at the end of the scene run with steps of endTime/steps.
-Vec3 finalPosition(Scene scene, long steps, ParticleId id) {
-    const test::SwirlingStagnationFlow flow(5, 10, Vec3(1, 0.5, 0));
-    scene.time.dt = scene.time.endTime / static_cast<double>(steps);
-    Stepper stepper(scene, flow);
-    while (!stepper.finished()) stepper.step();
-    const auto& cloud = stepper.cloud();
-    const auto at = std::find(cloud.id.begin(), cloud.id.end(), id) - cloud.id.begin();
-    return cloud.position.at(static_cast<std::size_t>(at));
 }
 
 TEST(FullMaxeyRiley, ParticleReleasedInsideAStepKeepsSecondOrder) {
@@ -246,6 +239,16 @@ const char* fullPhysics = R"(
     history { model basset; accuracy 1e-4; }
     addedMass on; pressureGradient on; lift saffmanMeiMagnus; spin on; spinHistory on;)";
 
+/// Reading the default case with this physics block fails with an error naming key.
+void expectInputErrorNaming(const std::string& physics, const std::string& key) {
+    try {
+        readDefaultCaseWithPhysics(physics);
+        ADD_FAILURE() << "accepted: " << physics;
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find(key), std::string::npos) << error.what();
+    }
+}
+
 TEST(UnsteadyKeys, ReachTheSceneAndMagnusAndSpinHistoryNeedSpin) {
     const Scene scene = readDefaultCaseWithPhysics(fullPhysics);
     EXPECT_EQ(scene.physics.history, HistoryModel::basset);
@@ -256,23 +259,11 @@ TEST(UnsteadyKeys, ReachTheSceneAndMagnusAndSpinHistoryNeedSpin) {
     // Spin left to auto follows Magnus lift; spin set off with Magnus lift is an error.
     EXPECT_TRUE(readDefaultCaseWithPhysics("lift magnus;").physics.spin);
     EXPECT_FALSE(readDefaultCaseWithPhysics("lift saffmanMei;").physics.spin);
-    try {
-        readDefaultCaseWithPhysics("lift magnus; spin off;");
-        ADD_FAILURE() << "magnus lift without spin was accepted";
-    } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("physics.lift"), std::string::npos)
-            << error.what();
-    }
+    expectInputErrorNaming("lift magnus; spin off;", "physics.lift");
     // The spin's history (Eq. 3.19) turns auto spin on, and refuses spin off.
     const Scene spinning = readDefaultCaseWithPhysics("lift none; spinHistory on;");
     EXPECT_TRUE(spinning.physics.spin && spinning.physics.spinHistory);
-    try {
-        readDefaultCaseWithPhysics("spin off; spinHistory on;");
-        ADD_FAILURE() << "the spin's history without spin was accepted";
-    } catch (const InputError& error) {
-        EXPECT_NE(std::string(error.what()).find("physics.spinHistory"), std::string::npos)
-            << error.what();
-    }
+    expectInputErrorNaming("spin off; spinHistory on;", "physics.spinHistory");
 }
 
 TEST(FullMaxeyRiley, SameParticlesOnOneAndTwoThreads) {
