@@ -235,6 +235,10 @@ TEST_F(VtkOutput, FrameCarriesTemperatureAndSpinOnlyWhereTracked) {
 
 TEST_F(VtkOutput, FrameWithMismatchedArraysIsRejected) {
     KnownFrame known;
+    ParticleFrame shortSpin = known.frame();
+    const std::vector<Vec3> twoSpins(2, Vec3::Zero());
+    shortSpin.angularVelocity = twoSpins;
+    EXPECT_THROW(writeParticlesVtp(directory_ / "bad.vtp", shortSpin), std::invalid_argument);
     known.radius.pop_back();
     EXPECT_THROW(writeParticlesVtp(directory_ / "bad.vtp", known.frame()), std::invalid_argument);
     EXPECT_TRUE(filesPresent().empty());

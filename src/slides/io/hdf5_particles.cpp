@@ -42,12 +42,8 @@ ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory,
 std::filesystem::path ParticlesHdf5::partialFile() const { return partialPath(directory_); }
 
 void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
+    if (!frame.consistent()) throw std::invalid_argument("particle frame arrays differ in length");
     const std::size_t count = frame.id.size();
-    if (frame.position.size() != count || frame.velocity.size() != count ||
-        frame.radius.size() != count || frame.state.size() != count ||
-        (frame.temperature && frame.temperature->size() != count) ||
-        (frame.angularVelocity && frame.angularVelocity->size() != count))
-        throw std::invalid_argument("particle frame arrays differ in length");
     const std::string group = frameGroup(frames_.size());
     const Hdf5File& file = *file_;
     const Hdf5Handle created = file.createGroup(group);

@@ -17,12 +17,9 @@
 namespace slides {
 
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame) {
-    const std::size_t size = frame.id.size();
-    if (frame.position.size() != size || frame.velocity.size() != size ||
-        frame.radius.size() != size || frame.state.size() != size ||
-        (frame.temperature && frame.temperature->size() != size) ||
-        (frame.angularVelocity && frame.angularVelocity->size() != size))
+    if (!frame.consistent())
         throw std::invalid_argument("writeParticlesVtp: the frame's arrays differ in length");
+    const std::size_t size = frame.id.size();
     const auto count = static_cast<vtkIdType>(size);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();

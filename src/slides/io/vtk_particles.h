@@ -28,6 +28,14 @@ struct ParticleFrame {
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
     std::optional<std::span<const double>> temperature = std::nullopt;   ///< [K]; none: no heating
     std::optional<std::span<const Vec3>> angularVelocity = std::nullopt; ///< [rad/s]; none: no ω
+
+    /// Whether every array holds one entry per particle.
+    bool consistent() const {
+        const std::size_t count = id.size();
+        return position.size() == count && velocity.size() == count && radius.size() == count &&
+               state.size() == count && (!temperature || temperature->size() == count) &&
+               (!angularVelocity || angularVelocity->size() == count);
+    }
 };
 
 /// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and
