@@ -189,11 +189,15 @@ std::vector<KeyDeclaration> declareKeys() {
         {"physics.buoyancy", K::boolean, "-", "on", {}, R::any,
          "Subtract the displaced gas's weight, (m − mf) g of Eq. 3.16."},
         {"physics.history", K::dictionary, "-", "-", {}, R::any,
-         "Basset history force (Eq. 3.3; physics/history_integrator.h)."},
+         "History force (Eq. 3.3, 3.4, 3.8; physics/history_integrator.h, "
+         "physics/finite_reynolds_history.h)."},
         {"physics.history.model", K::word, "-", "auto", namesOrAuto(historyModelNames()),
          R::any,
-         "none: no history force; basset: Basset's kernel, window + exponential-sum tail; auto: "
-         "basset where the scene analysis finds it matters."},
+         "none: no history force; basset: Basset's kernel, window + exponential-sum tail; "
+         "meiAdrian, kim: the finite-Reynolds kernels of Eq. 3.5 and 3.9 (Kim's with the "
+         "initial-slip kernel K1 of Eq. 3.13 and G = 1 inside the integral: the acceleration "
+         "factor of Eq. 3.10 is not modelled), same memory, no start mode; auto: basset where "
+         "the scene analysis finds it matters."},
         {"physics.history.accuracy", K::scalar, "-", "1e-3", {}, R::positive,
          "Relative error of the tail's kernel over the run; sets its window and terms."},
         {"physics.addedMass", K::switchOrAuto, "-", "auto", {}, R::any,

@@ -23,11 +23,20 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     width_ = 4; // age, v_{n−1}
     history_ = physics.history == HistoryModel::basset;
     spinHistory_ = physics.spin && physics.spinHistory;
-    if (!history_ && !spinHistory_) return;
+    const bool finiteReynolds =
+        physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim;
+    if (!history_ && !spinHistory_ && !finiteReynolds) return;
     memory_ = WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
     if (history_) {
         historyOffset_ = width_;
         width_ += 6 + memory_->doubles(); // s0, I_n, memory
+    }
+    if (finiteReynolds) {
+        finiteReynolds_ = FiniteReynoldsLayout::make(*memory_, scene.time.endTime);
+        finiteReynoldsTables_ = &FiniteReynoldsKernel::of(
+            physics.history == HistoryModel::kim ? kimShape : meiAdrianShape);
+        historyOffset_ = width_;
+        width_ += 3 + finiteReynolds_->doubles(); // A_n, memory
     }
     if (spinHistory_) {
         spinHistoryOffset_ = width_;
@@ -172,6 +181,26 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             HistoryStart start{startSlip, state[0], integral};
             WindowTailHistory memory(*memory_, historyState + 6);
             result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
+            integral = start.integral;
+        } else if (finiteReynolds_) {
+            step.historyRate =
+                bassetHistoryRate(particleDensity, fluidDensity, viscosity, radius, addedMass);
+            double* historyState = state + historyOffset_;
+            Eigen::Map<Vec3> integral(historyState);
+            FiniteReynoldsWindowTail memory(*finiteReynolds_, historyState + 3,
+                                            SlipKernel{finiteReynoldsTables_, radius, viscosity});
+            if (state[0] == 0) { // released now: the slip's jump, Kim's with G1 (Eq. 3.13–3.14)
+                const double slip = slipStart.norm();
+                const double g1 = scene_.physics.history == HistoryModel::kim
+                                      ? kimInitialFactor(2 * radius * slip / viscosity,
+                                                         particleDensity / fluidDensity)
+                                      : 1.0;
+                memory.start(slipStart, crossoverLag(finiteReynoldsTables_->shape(), slip, radius,
+                                                     viscosity, g1));
+                integral.setZero();
+            }
+            HistoryStart start{Vec3::Zero(), state[0], integral};
+            result = advanceWithHistory(step, velocity, start, memory);
             integral = start.integral;
         } else {
             NoHistory memory;

@@ -20,9 +20,12 @@
 // particle's shorter first step (released inside a step) at its length; they assume dt for all
 // later steps, so the run's shortened last step makes an O(h²) error there. Per-particle state
 // lives in ParticleCloud::modelState: age, w_{n−1}, then the history start s0, I_n and the window +
-// tail memory, and the same three for the spin's history, each only when its term is on.
+// tail memory (A_n and the memory of physics/finite_reynolds_history.h for Mei & Adrian's or
+// Kim's kernel, which have no start mode), and the same three for the spin's history, each only
+// when its term is on.
 //
-//     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;
+//     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;  // or
+//               meiAdrian, kim
 //               lift saffmanMei; spin on; spinHistory on; }
 #pragma once
 
@@ -30,6 +33,7 @@
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/finite_reynolds_history.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/unsteady.h"
 
@@ -69,7 +73,9 @@ private:
     Vec3 bodyAcceleration_;
     double fluidAccelerationFactor_;
     CarrierNeeds needs_;
-    std::optional<WindowTailLayout> memory_; ///< of both histories, when either is on
+    std::optional<WindowTailLayout> memory_;             ///< of both histories, when either is on
+    std::optional<FiniteReynoldsLayout> finiteReynolds_; ///< Mei & Adrian's or Kim's kernel
+    const FiniteReynoldsKernel* finiteReynoldsTables_ = nullptr;
     bool history_ = false, spinHistory_ = false;
     std::size_t historyOffset_ = 0, spinHistoryOffset_ = 0, width_ = 0;
 

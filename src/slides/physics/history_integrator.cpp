@@ -1,5 +1,7 @@
 #include "slides/physics/history_integrator.h"
 
+#include "slides/physics/finite_reynolds_history.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -377,5 +379,9 @@ template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStar
 template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&,
                                        WindowTailHistory&, const StartModeStep&);
 template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&, NoHistory&);
+template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&,
+                                       FiniteReynoldsFullHistory&);
+template StepResult advanceWithHistory(const SlipStep&, const Vec3&, HistoryStart&,
+                                       FiniteReynoldsWindowTail&);
 
 } // namespace slides

@@ -20,7 +20,7 @@
 // The same machinery integrates the spin's unsteady torque (Eq. 3.19, Feuillebois & Lasek 1978,
 // Q. J. Mech. Appl. Math. 31:435), whose kernel is 1/√ℓ less a bounded part (HistoryKernel).
 //
-//     physics { history { model basset; accuracy 1e-3; } }   // model none | basset
+//     physics { history { model basset; accuracy 1e-3; } }   // none | basset | meiAdrian | kim
 #pragma once
 
 #include "slides/core/vector.h"
@@ -32,7 +32,7 @@
 
 namespace slides {
 
-enum class HistoryModel { none, basset };
+enum class HistoryModel { none, basset, meiAdrian, kim };
 
 struct HistoryModelName {
     HistoryModel value;
@@ -40,9 +40,13 @@ struct HistoryModelName {
 };
 
 /// The name table of the history family. How to add one: an enumerator here, its kernel in
-/// physics/history_kernel.h, and its memory in the Maxey–Riley stepper (integrate/maxey_riley.h).
-constexpr std::array<HistoryModelName, 2> historyModelNames() {
-    return {{{HistoryModel::none, "none"}, {HistoryModel::basset, "basset"}}};
+/// physics/history_kernel.h (a finite-Reynolds shape in physics/finite_reynolds_kernel.h), and
+/// its memory in the Maxey–Riley stepper (integrate/maxey_riley.h).
+constexpr std::array<HistoryModelName, 4> historyModelNames() {
+    return {{{HistoryModel::none, "none"},
+             {HistoryModel::basset, "basset"},
+             {HistoryModel::meiAdrian, "meiAdrian"},
+             {HistoryModel::kim, "kim"}}};
 }
 
 /// e^{x²} erfc(x) for x ≥ 0, without overflow for large x.
