@@ -142,5 +142,91 @@ TEST(FiniteReynoldsHistory, WindowTailStaysWithinItsAccuracyOverLongRuns) {
     EXPECT_LT(worstTotal, accuracy);
 }
 
+/// A glass sphere (R = 0.5 mm, ρp = 2500) in water, Stokes drag per effective mass, and the gas
+/// either turning from rest, u = U (sin Ωt, 1 − cos Ωt, 0), so that the slip turns with it and
+/// never vanishes after the start, or a uniform stream U (1, ½, 0) into which the sphere is
+/// released at rest. Re ≈ 5 makes ℓ_c ≈ 17 ms against a run of 0.4 s.
+struct Sphere {
+    double fluidDensity = 1000, particleDensity = 2500, viscosity = 1e-6, radius = 5e-4;
+    double speed = 0.01, frequency = 2 * std::numbers::pi / 0.2, endTime = 0.4;
+    Vec3 gasAt(double t, bool stream) const {
+        if (stream) return speed * Vec3(1, 0.5, 0);
+        return speed * Vec3(std::sin(frequency * t), 1 - std::cos(frequency * t), 0);
+    }
+};
+
+enum class Memory { full, windowTail };
+
+/// v at the end time after `steps` steps, with the kernel's memory of the slip.
+Vec3 finalVelocity(const FiniteReynoldsShape& shape, Memory kind, bool stream, long steps) {
+    const Sphere c;
+    const double h = c.endTime / steps;
+    const SlipKernel kernel{&FiniteReynoldsKernel::of(shape), c.radius, c.viscosity};
+    SlipStep step;
+    step.h = h;
+    step.dragRate =
+        1 / effectiveResponseTime(c.particleDensity, c.fluidDensity, c.viscosity, c.radius, 0.5);
+    step.historyRate =
+        bassetHistoryRate(c.particleDensity, c.fluidDensity, c.viscosity, c.radius, 0.5);
+    Vec3 v = Vec3::Zero();
+    const Vec3 releaseSlip = c.gasAt(0, stream) - v;
+    const double jump = kernel.crossover(releaseSlip);
+    FiniteReynoldsFullHistory full(kernel, releaseSlip, jump);
+    const FiniteReynoldsLayout layout =
+        FiniteReynoldsLayout::make(WindowTailLayout::make(h, c.endTime, 1e-6), c.endTime);
+    std::vector<double> state(layout.doubles());
+    FiniteReynoldsWindowTail windowTail(layout, state.data(), kernel);
+    windowTail.start(releaseSlip, jump);
+    HistoryStart start;
+    for (long n = 0; n < steps; ++n) {
+        step.gasStart = c.gasAt(n * h, stream);
+        step.gasEnd = c.gasAt((n + 1) * h, stream);
+        v = (kind == Memory::full ? advanceWithHistory(step, v, start, full)
+                                  : advanceWithHistory(step, v, start, windowTail))
+                .velocity;
+    }
+    return v;
+}
+
+/// Orders from |v_h − v_{h/2}| under step halving; returns the last.
+double selfConvergenceOrder(const FiniteReynoldsShape& shape, Memory kind, bool stream) {
+    double previousError = 0, order = 0;
+    Vec3 previous = finalVelocity(shape, kind, stream, 25);
+    for (long steps = 50; steps <= 3200; steps *= 2) {
+        const Vec3 v = finalVelocity(shape, kind, stream, steps);
+        const double error = (v - previous).norm();
+        if (previousError > 0) order = std::log2(previousError / error);
+        std::printf("    h = T/%-5ld |v_h − v_2h| %.3e  order %.2f\n", steps, error, order);
+        previousError = error;
+        previous = v;
+    }
+    return order;
+}
+
+TEST(FiniteReynoldsHistory, EquationOfMotionReleasedWithTheFlowIsSecondOrder) {
+    // Design order 2. From zero slip at the start, ℓ_c ∝ 1/|s|² makes the kernel depend on
+    // τ^(2p) there (p = 3/4, 0.6), which adds h^(1+2p) terms: measured 1.80 (Mei & Adrian) and
+    // 2.35 (Kim) at h = T/3200, still approaching 2 (Mei & Adrian 1.86, 1.90 at T/6400, T/12800).
+    for (const auto& shape : {meiAdrianShape, kimShape}) {
+        for (const Memory kind : {Memory::full, Memory::windowTail}) {
+            std::printf("c1 = %.1f, %s, turning gas from rest:\n", shape.exponent,
+                        kind == Memory::full ? "reference" : "window + tail");
+            const double order = selfConvergenceOrder(shape, kind, false);
+            EXPECT_GT(order, 1.7);
+            EXPECT_LT(order, 2.45);
+        }
+    }
+}
+
+TEST(FiniteReynoldsHistory, ReleaseWithSlipLosesOrderWithoutAStartMode) {
+    // s − s(0) ∝ √t after a release with slip: the linear interpolation of the slip on the first
+    // intervals errs O(h^(3/2)) there, and its effect lasts. This records what the memories give
+    // (no start mode for these kernels yet, unlike Basset's); the order stays above 1.
+    std::printf("c1 = 2.0, reference, released at rest into a stream:\n");
+    const double order = selfConvergenceOrder(meiAdrianShape, Memory::full, true);
+    EXPECT_GT(order, 1.0);
+    EXPECT_LT(order, 1.9);
+}
+
 } // namespace
 } // namespace slides
