@@ -1,7 +1,8 @@
 // Cost per particle-step and memory per particle of the unsteady terms, on the analytic jet of
 // the default case: drag only (exponentialMidpoint), drag + Basset history (window + exponential
 // tail, accuracy 1e-3), and the full Maxey–Riley equation (history, added mass, pressure
-// gradient, Saffman–Mei + Magnus lift, spin), and the same with the spin's history (Eq. 3.19).
+// gradient, Saffman–Mei + Magnus lift, spin), and the same with the spin's history (Eq. 3.19);
+// drag + Mei & Adrian's and Kim's finite-Reynolds history (physics/finite_reynolds_history.h).
 //
 //     build/tools/bench/bench_history --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; bytes_per_particle counts the kinematic arrays
@@ -16,7 +17,7 @@
 
 namespace {
 
-enum Variant { dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory };
+enum Variant { dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory, dragMeiAdrian, dragKim };
 
 void unsteadyCost(benchmark::State& state) {
     slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
@@ -25,7 +26,9 @@ void unsteadyCost(benchmark::State& state) {
     const auto variant = static_cast<Variant>(state.range(1));
     auto& physics = scene.physics;
     if (variant != dragOnly) physics.history = slides::HistoryModel::basset;
-    if (variant >= fullMaxeyRiley) {
+    if (variant == dragMeiAdrian) physics.history = slides::HistoryModel::meiAdrian;
+    if (variant == dragKim) physics.history = slides::HistoryModel::kim;
+    if (variant == fullMaxeyRiley || variant == fullWithSpinHistory) {
         physics.addedMass = physics.pressureGradient = physics.spin = true;
         physics.lift = slides::LiftModel::saffmanMeiMagnus;
     }
@@ -45,11 +48,15 @@ void unsteadyCost(benchmark::State& state) {
     state.SetLabel(variant == dragOnly         ? "drag only"
                    : variant == dragHistory    ? "drag + history"
                    : variant == fullMaxeyRiley ? "full Maxey-Riley"
+                   : variant == dragMeiAdrian  ? "drag + Mei-Adrian history"
+                   : variant == dragKim        ? "drag + Kim history"
                                                : "full + spin history");
 }
 
 BENCHMARK(unsteadyCost)
-    ->ArgsProduct({{1000, 10000}, {dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory}})
+    ->ArgsProduct({{1000, 10000},
+                   {dragOnly, dragHistory, fullMaxeyRiley, fullWithSpinHistory, dragMeiAdrian,
+                    dragKim}})
     ->ArgNames({"particles", "variant"})
     ->UseRealTime()
     ->Unit(benchmark::kMicrosecond);

@@ -39,6 +39,7 @@ FiniteReynoldsLayout FiniteReynoldsLayout::make(const WindowTailLayout& base, do
         layout.entryWeight.push_back(base.tail.amplitude[i] * std::exp(-rate * windowLength) *
                                      -std::expm1(-rate * h) / (rate * rate * h));
         layout.horizonDecay.push_back(std::exp(-rate * horizon));
+        layout.logRate.push_back(std::log(rate));
     }
     return layout;
 }
@@ -65,6 +66,7 @@ void FiniteReynoldsWindowTail::enterTail(const Vec3& increment, double lag, doub
     const double oldest = lag + layout_.horizon;
     double constant = length == 0 ? tables.firstIntegral(oldest, crossover)
                                   : tables.intervalWeight(oldest, length, crossover);
+    const double logCrossover = std::log(crossover); // +∞ with no slip: κ = 1
     for (std::size_t i = 0; i < terms_; ++i) {
         const double rate = 1 / sum.timescale[i];
         double entry = layout_.entryWeight[i];
@@ -72,7 +74,7 @@ void FiniteReynoldsWindowTail::enterTail(const Vec3& increment, double lag, doub
             entry = sum.amplitude[i] * std::exp(-rate * lag) / rate;
             if (length > 0) entry *= -std::expm1(-rate * length) / (rate * length);
         }
-        entry *= tables.spectrumRatio(rate * crossover);
+        entry *= tables.spectrumRatioAtLog(layout_.logRate[i] + logCrossover);
         constant += entry * layout_.horizonDecay[i];
         Eigen::Map<Vec3>(tail() + 3 * i) -= entry * increment;
     }

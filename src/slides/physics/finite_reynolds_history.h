@@ -74,6 +74,7 @@ struct FiniteReynoldsLayout {
     double horizon = 0; ///< the run's length: Λ = entry lag + horizon
     std::vector<double> entryWeight;
     std::vector<double> horizonDecay; ///< e^{−x_i horizon}
+    std::vector<double> logRate;      ///< ln x_i
 
     static FiniteReynoldsLayout make(const WindowTailLayout& base, double horizon);
     /// Doubles per particle: slips at lags 0 … window, the window's crossovers, the tail sums,

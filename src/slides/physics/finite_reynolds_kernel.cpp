@@ -192,26 +192,26 @@ double FiniteReynoldsKernel::intervalWeight(double lag, double length, double cr
 }
 
 double FiniteReynoldsKernel::spectrumRatio(double x) const {
-    if (std::isinf(x)) return 1;
-    const double logX = std::log(x), p = shape_.power(), c1 = shape_.exponent;
+    return spectrumRatioAtLog(std::log(x));
+}
+
+double FiniteReynoldsKernel::spectrumRatioAtLog(double logX) const {
     if (logX > kappaMax) {
-        // F ≈ 1 − c1 (ρ/X)^p e^{−iπp}: κ ≈ 1 − c1 cos(πp) Γ(p + ½)/√π X^(−p).
-        return 1 - c1 * std::cos(std::numbers::pi * p) * std::tgamma(p + 0.5) /
-                       std::sqrt(std::numbers::pi) * std::pow(x, -p);
+        // F ≈ 1 − c1 (ρ/X)^p e^{−iπp}: κ ≈ 1 − c1 cos(πp) Γ(p + ½)/√π X^(−p) (1 for X = ∞).
+        const double p = shape_.power();
+        return 1 - shape_.exponent * std::cos(std::numbers::pi * p) * std::tgamma(p + 0.5) /
+                       std::sqrt(std::numbers::pi) * std::exp(-p * logX);
     }
     if (logX < kappaMin) return std::exp(logKappa_.front() + 1.5 * (logX - kappaMin)); // K̂ ∝ ℓ^(−2)
-    // Cubic Lagrange on the four nearest nodes.
+    // Cubic Lagrange on the four nearest nodes k … k + 3, at u from node k.
     const double position = (logX - kappaMin) / kappaStep;
     const auto last = static_cast<long>(logKappa_.size()) - 1;
     const long k = std::clamp(static_cast<long>(position) - 1, 0L, last - 3);
     const double u = position - static_cast<double>(k);
-    double value = 0;
-    for (long i = 0; i < 4; ++i) {
-        double basis = 1;
-        for (long j = 0; j < 4; ++j)
-            if (j != i) basis *= (u - static_cast<double>(j)) / static_cast<double>(i - j);
-        value += basis * logKappa_[static_cast<std::size_t>(k + i)];
-    }
+    const double* f = logKappa_.data() + k;
+    const double value = -(u - 1) * (u - 2) * (u - 3) / 6 * f[0] +
+                         u * (u - 2) * (u - 3) / 2 * f[1] - u * (u - 1) * (u - 3) / 2 * f[2] +
+                         u * (u - 1) * (u - 2) / 6 * f[3];
     return std::exp(value);
 }
 

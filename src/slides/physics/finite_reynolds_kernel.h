@@ -56,6 +56,8 @@ public:
     double intervalWeight(double lag, double length, double crossover) const;
     /// κ(X), X = x ℓ_c.
     double spectrumRatio(double x) const;
+    /// κ at ln X (for sums over a ladder of rates x_i with one ℓ_c: ln X = ln x_i + ln ℓ_c).
+    double spectrumRatioAtLog(double logX) const;
 
     /// q(y), w(y) and F(y) of the dimensionless lag y = ℓ/ℓ_c.
     double q(double y) const;
