@@ -99,6 +99,14 @@ TEST(FiniteReynoldsKernel, CrossoverLagReproducesTheKernelsOfEq35And39) {
             const double kim = FiniteReynoldsKernel::of(kimShape).kernel(
                 lag, crossoverLag(kimShape, slip, radius, viscosity, g));
             EXPECT_NEAR(kim * basset / kimKernel(lag, slip, radius, viscosity, g), 1, 1e-12);
+            // Kim's initial-slip kernel K1 (Eq. 3.13): G1 of Eq. 3.14 in ℓ_c.
+            const double densityRatio = 2000, reynolds = 2 * radius * slip / viscosity;
+            const double initial = FiniteReynoldsKernel::of(kimShape).kernel(
+                lag, crossoverLag(kimShape, slip, radius, viscosity,
+                                  kimInitialFactor(reynolds, densityRatio)));
+            EXPECT_NEAR(initial * basset /
+                            kimInitialKernel(lag, slip, radius, viscosity, densityRatio),
+                        1, 1e-12);
         }
     }
 }
