@@ -212,9 +212,9 @@ TEST(FullMaxeyRiley, ParticleReleasedInsideAStepKeepsSecondOrder) {
 }
 
 TEST(FullMaxeyRiley, FiniteReynoldsKernelsInTheStepper) {
-    // The scene above with Mei & Adrian's and Kim's kernels. Released with slip and without a
-    // start mode, the velocity converges at order 1.5 (test_finite_reynolds_history.cpp), but
-    // the position, its integral, at 2: measured 2.05 … 2.00 (Mei & Adrian), 2.06 … 1.96 (Kim).
+    // The scene above with Mei & Adrian's and Kim's kernels, released with slip (the start mode
+    // and its ℓ_c as in test_finite_reynolds_history.cpp): the position converges at order 2,
+    // measured 2.01 … 2.00 (Mei & Adrian), 2.02 … 2.00 (Kim).
     // The kernels leave Basset's after ℓ_c ≈ 0.14 ms (Re ≈ 7) of the 0.2 s run, so the history's
     // effect on the end position is of order √(ℓ_c/T) ≈ 0.03 of Basset's: measured 0.029 and
     // 0.038; the band 0.005–0.2 holds it to that order of magnitude.

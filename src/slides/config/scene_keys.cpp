@@ -196,7 +196,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "none: no history force; basset: Basset's kernel, window + exponential-sum tail; "
          "meiAdrian, kim: the finite-Reynolds kernels of Eq. 3.5 and 3.9 (Kim's with the "
          "initial-slip kernel K1 of Eq. 3.13 and G = 1 inside the integral: the acceleration "
-         "factor of Eq. 3.10 is not modelled), same memory, no start mode; auto: basset where "
+         "factor of Eq. 3.10 is not modelled), a memory of the slip's increments (physics/"
+         "finite_reynolds_history.h); auto: basset where "
          "the scene analysis finds it matters."},
         {"physics.history.accuracy", K::scalar, "-", "1e-3", {}, R::positive,
          "Relative error of the tail's kernel over the run; sets its window and terms."},

@@ -21,23 +21,19 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     width_ = 4; // age, v_{n−1}
-    history_ = physics.history == HistoryModel::basset;
+    history_ = physics.history != HistoryModel::none;
     spinHistory_ = physics.spin && physics.spinHistory;
-    const bool finiteReynolds =
-        physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim;
-    if (!history_ && !spinHistory_ && !finiteReynolds) return;
+    if (!history_ && !spinHistory_) return;
     memory_ = WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
-    if (history_) {
-        historyOffset_ = width_;
-        width_ += 6 + memory_->doubles(); // s0, I_n, memory
-    }
-    if (finiteReynolds) {
+    if (physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim) {
         finiteReynolds_ = FiniteReynoldsLayout::make(*memory_, scene.time.endTime);
         finiteReynoldsTables_ = &FiniteReynoldsKernel::of(
             physics.history == HistoryModel::kim ? kimShape : meiAdrianShape);
-        historyOffset_ = width_;
-        width_ += 3 + finiteReynolds_->doubles(); // A_n, memory
     }
+    if (history_) {
+        historyOffset_ = width_;
+        width_ += 6 + (finiteReynolds_ ? finiteReynolds_->doubles() : memory_->doubles());
+    } // s0, I_n (A_n), memory
     if (spinHistory_) {
         spinHistoryOffset_ = width_;
         width_ += 6 + memory_->doubles(); // σ0, I_n, memory
@@ -179,28 +175,24 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             double* historyState = state + historyOffset_;
             Eigen::Map<Vec3> startSlip(historyState), integral(historyState + 3);
             HistoryStart start{startSlip, state[0], integral};
-            WindowTailHistory memory(*memory_, historyState + 6);
-            result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
-            integral = start.integral;
-        } else if (finiteReynolds_) {
-            step.historyRate =
-                bassetHistoryRate(particleDensity, fluidDensity, viscosity, radius, addedMass);
-            double* historyState = state + historyOffset_;
-            Eigen::Map<Vec3> integral(historyState);
-            FiniteReynoldsWindowTail memory(*finiteReynolds_, historyState + 3,
-                                            SlipKernel{finiteReynoldsTables_, radius, viscosity});
-            if (state[0] == 0) { // released now: the slip's jump, Kim's with G1 (Eq. 3.13–3.14)
-                const double slip = slipStart.norm();
-                const double g1 = scene_.physics.history == HistoryModel::kim
-                                      ? kimInitialFactor(2 * radius * slip / viscosity,
-                                                         particleDensity / fluidDensity)
-                                      : 1.0;
-                memory.start(slipStart, crossoverLag(finiteReynoldsTables_->shape(), slip, radius,
-                                                     viscosity, g1));
-                integral.setZero();
+            if (finiteReynolds_) {
+                FiniteReynoldsWindowTail memory(
+                    *finiteReynolds_, historyState + 6,
+                    SlipKernel{finiteReynoldsTables_, radius, viscosity});
+                if (state[0] == 0) { // released now: the jump, Kim's with G1 (Eq. 3.13–3.14)
+                    const double slip = startSlip.norm();
+                    const double g1 = scene_.physics.history == HistoryModel::kim
+                                          ? kimInitialFactor(2 * radius * slip / viscosity,
+                                                             particleDensity / fluidDensity)
+                                          : 1.0;
+                    memory.start(startSlip, crossoverLag(finiteReynoldsTables_->shape(), slip,
+                                                         radius, viscosity, g1));
+                }
+                result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
+            } else {
+                WindowTailHistory memory(*memory_, historyState + 6);
+                result = advanceWithHistory(step, velocity, start, memory, startModes_[i]);
             }
-            HistoryStart start{Vec3::Zero(), state[0], integral};
-            result = advanceWithHistory(step, velocity, start, memory);
             integral = start.integral;
         } else {
             NoHistory memory;

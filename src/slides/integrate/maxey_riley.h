@@ -21,8 +21,7 @@
 // later steps, so the run's shortened last step makes an O(h²) error there. Per-particle state
 // lives in ParticleCloud::modelState: age, w_{n−1}, then the history start s0, I_n and the window +
 // tail memory (A_n and the memory of physics/finite_reynolds_history.h for Mei & Adrian's or
-// Kim's kernel, which have no start mode), and the same three for the spin's history, each only
-// when its term is on.
+// Kim's kernel), and the same three for the spin's history, each only when its term is on.
 //
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;  // or
 //               meiAdrian, kim

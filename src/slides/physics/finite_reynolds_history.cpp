@@ -2,29 +2,89 @@
 
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 namespace slides {
+
+namespace {
+
+/// The two crossovers of an interval [t_a, t_b] after a release with slip s0, with
+/// s = s0 φ(τ) + ρ, ρ linear over the interval. ℓ_c varies there as a series in √τ, and its
+/// mean must be weighted as each part's increments are: dρ ∝ dτ, but s0 dφ = s0 φ' dτ with
+/// φ' ∝ τ^(−½) at first. One mean for both (at the nodes) misses the right one by O(h/j) on
+/// interval j, O(h^(3/2)) in A in all; so each part gets its own, by 2-point Gauss–Legendre in
+/// u = √τ (where ℓ_c is smooth), weighted by dτ/du = 2u and dφ/du = 2u α² φ − 2α/√π.
+IntervalCrossovers crossoversAfterRelease(const SlipKernel& kernel, double alpha,
+                                          const Vec3& startSlip, double start,
+                                          const Vec3& remainderStart, double end,
+                                          const Vec3& remainderEnd) {
+    const double a = std::sqrt(start), b = std::sqrt(end), offset = 0.5 / std::sqrt(3.0);
+    double remainder = 0, remainderWeights = 0, startMode = 0, startModeWeights = 0;
+    for (const double side : {-1.0, 1.0}) {
+        const double u = 0.5 * (a + b) + side * offset * (b - a);
+        const double phi = scaledComplementaryError(alpha * u);
+        const double fraction = (u * u - start) / (end - start);
+        const double crossover = kernel.crossover(
+            phi * startSlip + (1 - fraction) * remainderStart + fraction * remainderEnd);
+        const double stepWeight = 2 * u;
+        const double startWeight =
+            2 * u * alpha * alpha * phi - 2 * alpha / std::sqrt(std::numbers::pi);
+        remainder += stepWeight * crossover;
+        remainderWeights += stepWeight;
+        startMode += startWeight * crossover;
+        startModeWeights += startWeight;
+    }
+    return {remainder / remainderWeights, startMode / startModeWeights};
+}
+
+/// Intervals after a release whose ℓ_c is weighted per part. Beyond them both weightings agree
+/// with the nodes' mean to O(h²/j) on interval j, and Σ_j>64 of what that leaves is below a
+/// tenth of the first intervals' share; one ℓ_c then serves both parts (one κ per tail term).
+constexpr std::size_t weightedIntervals = 64;
+
+} // namespace
 
 FiniteReynoldsFullHistory::FiniteReynoldsFullHistory(const SlipKernel& kernel,
                                                      const Vec3& releaseSlip, double jumpCrossover)
     : kernel_(kernel), jumpCrossover_(jumpCrossover), slips_{releaseSlip} {}
 
-Vec3 FiniteReynoldsFullHistory::beginStep(double stepLength) {
+Vec3 FiniteReynoldsFullHistory::beginStep(double stepLength, const StartModeStep& modes,
+                                          const Vec3& startSlip) {
     const FiniteReynoldsKernel& tables = *kernel_.tables;
     const std::size_t n = slips_.size() - 1;
     const double end = end_ = times_[n] + stepLength;
-    newestWeight_ = tables.intervalWeight(0, stepLength, kernel_.crossover(slips_[n]));
-    Vec3 known = tables.firstIntegral(end, jumpCrossover_) * slips_[0] - newestWeight_ * slips_[n];
+    const double newestCrossover = kernel_.crossover(slips_[n]);
+    newestWeight_ = tables.intervalWeight(0, stepLength, newestCrossover);
+    // s_{n+1} = ρ_{n+1} + s0 φ_{n+1}: the start mode's part of the newest slip is known.
+    Vec3 known = tables.firstIntegral(end, jumpCrossover_) * slips_[0] +
+                 newestWeight_ * (modes.after.value * startSlip - slips_[n]);
+    double momentSum =
+        tables.kernel(0.5 * stepLength, newestCrossover) * startModeMoment(modes, stepLength);
     for (std::size_t j = 0; j < n; ++j) {
-        known +=
-            (slips_[j + 1] - slips_[j]) *
-            tables.intervalWeight(end - times_[j + 1], times_[j + 1] - times_[j], crossovers_[j]);
+        const double lag = end - times_[j + 1], length = times_[j + 1] - times_[j];
+        const Vec3 startModeIncrement = (phis_[j + 1] - phis_[j]) * startSlip;
+        known += (slips_[j + 1] - slips_[j] - startModeIncrement) *
+                     tables.intervalWeight(lag, length, crossovers_[j].remainder) +
+                 startModeIncrement * tables.intervalWeight(lag, length, crossovers_[j].startMode);
+        momentSum += tables.kernel(lag + 0.5 * length, crossovers_[j].startMode) * moments_[j];
     }
-    return known;
+    return known - momentSum * startSlip;
 }
 
-void FiniteReynoldsFullHistory::endStep(const Vec3& slip) {
-    crossovers_.push_back(kernel_.crossover(0.5 * (slips_.back() + slip)));
+void FiniteReynoldsFullHistory::endStep(const Vec3& remainder, const StartModeStep& modes,
+                                        const Vec3& startSlip) {
+    const Vec3 slip = remainder + modes.after.value * startSlip;
+    const double start = times_.back(), length = end_ - start;
+    if (modes.alpha > 0 && crossovers_.size() < weightedIntervals) {
+        crossovers_.push_back(crossoversAfterRelease(kernel_, modes.alpha, startSlip, start,
+                                                     slips_.back() - phis_.back() * startSlip, end_,
+                                                     remainder));
+    } else {
+        const double crossover = kernel_.crossover(0.5 * (slips_.back() + slip));
+        crossovers_.push_back({crossover, crossover});
+    }
+    moments_.push_back(startModeMoment(modes, length));
+    phis_.push_back(modes.after.value);
     slips_.push_back(slip);
     times_.push_back(end_);
 }
@@ -40,6 +100,8 @@ FiniteReynoldsLayout FiniteReynoldsLayout::make(const WindowTailLayout& base, do
                                      -std::expm1(-rate * h) / (rate * rate * h));
         layout.horizonDecay.push_back(std::exp(-rate * horizon));
         layout.logRate.push_back(std::log(rate));
+        layout.momentWeight.push_back(base.tail.amplitude[i] *
+                                      std::exp(-rate * (windowLength + 0.5 * h)));
     }
     return layout;
 }
@@ -56,69 +118,130 @@ void FiniteReynoldsWindowTail::start(const Vec3& releaseSlip, double jumpCrossov
     this->jumpCrossover() = jumpCrossover;
 }
 
-void FiniteReynoldsWindowTail::enterTail(const Vec3& increment, double lag, double length,
-                                         double crossover) {
-    // The increment's weight at a later lag ℓ: its exact value at Λ = lag + horizon, less the
-    // sum's Σ_i entry_i (e^{−x_i (ℓ − lag)} − e^{−x_i horizon}), entry_i the term's weight now.
-    const FiniteReynoldsKernel& tables = *kernel_.tables;
+FiniteReynoldsWindowTail::TermWeights FiniteReynoldsWindowTail::termWeights(std::size_t i,
+                                                                            double lag,
+                                                                            double length,
+                                                                            bool regular) const {
+    if (regular) return {layout_.entryWeight[i], layout_.momentWeight[i]};
     const ExponentialSum& sum = layout_.base.tail;
-    const bool regular = length == layout_.base.h && lag == window_ * layout_.base.h;
-    const double oldest = lag + layout_.horizon;
-    double constant = length == 0 ? tables.firstIntegral(oldest, crossover)
-                                  : tables.intervalWeight(oldest, length, crossover);
-    const double logCrossover = std::log(crossover); // +∞ with no slip: κ = 1
-    for (std::size_t i = 0; i < terms_; ++i) {
-        const double rate = 1 / sum.timescale[i];
-        double entry = layout_.entryWeight[i];
-        if (!regular) {
-            entry = sum.amplitude[i] * std::exp(-rate * lag) / rate;
-            if (length > 0) entry *= -std::expm1(-rate * length) / (rate * length);
-        }
-        entry *= tables.spectrumRatioAtLog(layout_.logRate[i] + logCrossover);
-        constant += entry * layout_.horizonDecay[i];
-        Eigen::Map<Vec3>(tail() + 3 * i) -= entry * increment;
-    }
-    Eigen::Map<Vec3>(accumulator()) += constant * increment;
+    const double rate = 1 / sum.timescale[i];
+    double entry = sum.amplitude[i] * std::exp(-rate * lag) / rate;
+    if (length > 0) entry *= -std::expm1(-rate * length) / (rate * length);
+    return {entry, sum.amplitude[i] * std::exp(-rate * (lag + 0.5 * length))};
 }
 
-Vec3 FiniteReynoldsWindowTail::beginStep(double stepLength) {
+void FiniteReynoldsWindowTail::enterTail(const TailEntry& entry) {
+    // Each increment's weight at a later lag ℓ: its exact value at Λ = lag + horizon, less the
+    // sum's Σ_i w_i κ_i (e^{−x_i (ℓ − lag)} − e^{−x_i horizon}), w_i the term's weight now;
+    // the moment's, the sum of K̂ at the interval's middle.
+    const FiniteReynoldsKernel& tables = *kernel_.tables;
+    const bool regular = entry.length == layout_.base.h && entry.lag == window_ * layout_.base.h;
+    const double oldest = entry.lag + layout_.horizon;
+    const auto exactAtOldest = [&](double crossover) {
+        return entry.length == 0 ? tables.firstIntegral(oldest, crossover)
+                                 : tables.intervalWeight(oldest, entry.length, crossover);
+    };
+    const bool startMode = entry.startMode != 0 || entry.moment != 0;
+    double constant = exactAtOldest(entry.crossovers.remainder);
+    double startConstant = startMode ? exactAtOldest(entry.crossovers.startMode) : 0;
+    const double logRemainder = std::log(entry.crossovers.remainder); // +∞ with no slip: κ = 1
+    const double logStart = std::log(entry.crossovers.startMode);
+    for (std::size_t i = 0; i < terms_; ++i) {
+        const TermWeights weights = termWeights(i, entry.lag, entry.length, regular);
+        const double decay = layout_.horizonDecay[i];
+        const double remainderKappa = tables.spectrumRatioAtLog(layout_.logRate[i] + logRemainder);
+        const double remainderWeight = weights.entry * remainderKappa;
+        constant += remainderWeight * decay;
+        Eigen::Map<Vec3>(tail() + 3 * i) -= remainderWeight * entry.remainder;
+        if (!startMode) continue;
+        const double kappa = entry.crossovers.startMode == entry.crossovers.remainder
+                                 ? remainderKappa
+                                 : tables.spectrumRatioAtLog(layout_.logRate[i] + logStart);
+        startConstant += weights.entry * kappa * decay;
+        startTail()[i] -= weights.entry * kappa * entry.startMode;
+        momentTail()[i] += weights.moment * kappa * entry.moment;
+    }
+    Eigen::Map<Vec3>(accumulator()) += constant * entry.remainder;
+    startAccumulator() += startConstant * entry.startMode;
+}
+
+Vec3 FiniteReynoldsWindowTail::beginStep(double stepLength, const StartModeStep& modes,
+                                         const Vec3& startSlip) {
     const FiniteReynoldsKernel& tables = *kernel_.tables;
     const double h = layout_.base.h;
     const auto n = static_cast<int>(steps());
     if (n == 0) firstStep() = stepLength;
     const double end = firstStep() + n * h; // t_{n+1}
-    newestWeight_ = tables.intervalWeight(0, stepLength, kernel_.crossover(lagged(0)));
-    Vec3 known = -newestWeight_ * lagged(0);
+    const double newestCrossover = kernel_.crossover(lagged(0));
+    newestWeight_ = tables.intervalWeight(0, stepLength, newestCrossover);
+    // s_{n+1} = ρ_{n+1} + s0 φ_{n+1}: the start mode's part of the newest slip is known.
+    Vec3 known = newestWeight_ * (modes.after.value * startSlip - lagged(0));
+    double startSum = 0;
+    double momentSum =
+        tables.kernel(0.5 * stepLength, newestCrossover) * startModeMoment(modes, stepLength);
     // Interval m, between the slips m and m − 1 steps back from t_n, has its newer end m h
     // before t_{n+1}; the first interval is firstStep long.
     for (int m = 1; m <= std::min(window_ - 1, n); ++m) {
         const double length = m == n ? firstStep() : h;
-        known +=
-            (lagged(m - 1) - lagged(m)) * tables.intervalWeight(m * h, length, crossovers()[m - 1]);
+        const double startIncrement = startIncrements()[m - 1];
+        known += (lagged(m - 1) - lagged(m) - startIncrement * startSlip) *
+                 tables.intervalWeight(m * h, length, remainderCrossovers()[m - 1]);
+        startSum +=
+            startIncrement * tables.intervalWeight(m * h, length, startModeCrossovers()[m - 1]);
+        momentSum +=
+            tables.kernel(m * h + 0.5 * length, startModeCrossovers()[m - 1]) * moments()[m - 1];
     }
     if (n < window_) known += tables.firstIntegral(end, jumpCrossover()) * lagged(n);
     for (std::size_t i = 0; i < terms_; ++i) {
         Eigen::Map<Vec3>(tail() + 3 * i) *= layout_.base.tailDecay[i];
+        startTail()[i] *= layout_.base.tailDecay[i];
+        momentTail()[i] *= layout_.base.tailDecay[i];
     }
     if (n >= window_) {
-        const double length = n == window_ ? firstStep() : h;
-        enterTail(lagged(window_ - 1) - lagged(window_), window_ * h, length,
-                  crossovers()[window_ - 1]);
-        if (n == window_) enterTail(lagged(window_), end, 0, jumpCrossover());
+        const int m = window_ - 1; // the interval leaving the window
+        const double startIncrement = startIncrements()[m];
+        enterTail({lagged(m) - lagged(window_) - startIncrement * startSlip,
+                   startIncrement,
+                   moments()[m],
+                   window_ * h,
+                   n == window_ ? firstStep() : h,
+                   {remainderCrossovers()[m], startModeCrossovers()[m]}});
+        if (n == window_) enterTail({lagged(window_), 0, 0, end, 0, {jumpCrossover(), 1}});
     }
     known += Vec3(accumulator());
-    for (std::size_t i = 0; i < terms_; ++i) known += Vec3(tail() + 3 * i);
-    return known;
+    startSum += startAccumulator();
+    for (std::size_t i = 0; i < terms_; ++i) {
+        known += Vec3(tail() + 3 * i);
+        startSum += startTail()[i];
+        momentSum += momentTail()[i];
+    }
+    return known + (startSum - momentSum) * startSlip;
 }
 
-void FiniteReynoldsWindowTail::endStep(const Vec3& slip) {
-    const double crossover = kernel_.crossover(0.5 * (lagged(0) + slip));
+void FiniteReynoldsWindowTail::endStep(const Vec3& remainder, const StartModeStep& modes,
+                                       const Vec3& startSlip) {
+    const Vec3 slip = remainder + modes.after.value * startSlip;
+    const double length = steps() == 0 ? firstStep() : layout_.base.h;
+    const double start = steps() == 0 ? 0.0 : firstStep() + (steps() - 1) * layout_.base.h;
+    IntervalCrossovers crossovers{0, 0};
+    if (modes.alpha > 0 && steps() < weightedIntervals) {
+        crossovers = crossoversAfterRelease(kernel_, modes.alpha, startSlip, start,
+                                            lagged(0) - modes.before.value * startSlip,
+                                            start + length, remainder);
+    } else {
+        crossovers.remainder = crossovers.startMode = kernel_.crossover(0.5 * (lagged(0) + slip));
+    }
     std::memmove(state_ + 3, state_, sizeof(double) * 3 * static_cast<std::size_t>(window_));
     Eigen::Map<Vec3> newest(state_);
     newest = slip;
-    std::memmove(crossovers() + 1, crossovers(),
-                 sizeof(double) * static_cast<std::size_t>(window_ - 1));
-    crossovers()[0] = crossover;
+    const auto older = sizeof(double) * static_cast<std::size_t>(window_ - 1);
+    for (double* perInterval :
+         {remainderCrossovers(), startModeCrossovers(), moments(), startIncrements()})
+        std::memmove(perInterval + 1, perInterval, older);
+    remainderCrossovers()[0] = crossovers.remainder;
+    startModeCrossovers()[0] = crossovers.startMode;
+    moments()[0] = startModeMoment(modes, length);
+    startIncrements()[0] = modes.after.value - modes.before.value;
     steps() += 1;
 }
 

@@ -8,7 +8,8 @@
 // over [0, t] with the release's jump s(0) (Mei & Adrian's ∫ from −∞; Kim's separate term K1 of
 // Eq. 3.13, with its own G1 of Eq. 3.14). Over a step the velocity takes r_H (A_{n+1} − A_n) with
 //   A(t) = ∫ Q(t − τ; τ) ds(τ),  Q = ∫_0^ℓ K̂,
-// and with s linear on each interval, whose ℓ_c is taken at its mean slip (order 2):
+// and with s linear on each interval, whose ℓ_c is taken at its mean slip (order 2 for a smooth
+// slip):
 //   A_{n+1} = s_0 Q(t_{n+1}; ℓ_c,jump) + Σ_j (s_{j+1} − s_j) [W(L_j + h_j) − W(L_j)]/h_j,
 // L_j the lag of interval j's newer end. The newest interval's ℓ_c is taken at s_n, which keeps
 // the step linear in v_{n+1}; endStep then stores it at the interval's mean (the velocity after
@@ -21,7 +22,17 @@
 // decaying sum per term. Tying each interval to its exact Q at the oldest lag keeps the sum's
 // error in A from growing with the run (the sum's error in ∫ K̂ would add up over the intervals
 // otherwise: Q_∞ depends on each one's ℓ_c).
-// No start mode: a release with slip has s − s(0) ∝ √t, and both memories lose order there
+// Start: a release with slip s0 has s − s0 ∝ √t, as under Basset's kernel (the kernels agree at
+// short lags), and the linear slip of the first intervals would err O(h^(3/2)) in A for good.
+// With Basset's start mode φ (physics/history_integrator.h) the slip is s = s0 φ + ρ; the
+// memories take ρ, keep s at their nodes, and add to A the leading error of the linear φ on
+// each interval, from its moment M_j = ∫(τ − τ_mid) φ' dτ (the trapezoid rule of φ less its
+// integral, closed form):
+//   A ≈ A_linear(s) − s0 Σ_j K̂(t − τ_mid,j; ℓ_c,j) M_j,
+// the sum by the window and a scalar exponential tail like the slip's. ℓ_c follows |s|, a series
+// in √τ there, so each part's increments get their own weighted mean of it on the first 64
+// intervals (dρ ∝ dτ, dφ ∝ τ^(−½) dτ). What remains is the variance of ℓ_c over the first
+// intervals, O(h^(3/2)) with a small constant: the error is 10–60 times below the naive start's
 // (measured in tests/verification/test_finite_reynolds_history.cpp).
 //
 //     physics { history { model meiAdrian; accuracy 1e-3; } }   // or kim
@@ -45,6 +56,11 @@ struct SlipKernel {
     }
 };
 
+/// An interval's ℓ_c for the increments of the remainder ρ and of the start mode s0 φ.
+struct IntervalCrossovers {
+    double remainder, startMode;
+};
+
 /// Reference memory: every past slip and interval, O(n) work per step, any step lengths.
 class FiniteReynoldsFullHistory {
 public:
@@ -53,34 +69,48 @@ public:
                               double jumpCrossover);
     HistoryKernel kernel() const { return {}; }
     double newestWeight() const { return newestWeight_; }
-    /// A_{n+1} less its term in s_{n+1}.
-    Vec3 beginStep(double stepLength);
-    void endStep(const Vec3& slip);
+    /// A_{n+1} less its term in ρ_{n+1}, the slip being ρ + s0 φ over the step (s0 = 0: ρ is
+    /// the slip).
+    Vec3 beginStep(double stepLength, const StartModeStep& modes = {},
+                   const Vec3& startSlip = Vec3::Zero());
+    void endStep(const Vec3& remainder, const StartModeStep& modes = {},
+                 const Vec3& startSlip = Vec3::Zero());
 
 private:
     SlipKernel kernel_;
     double jumpCrossover_;
-    double newestWeight_ = 0, end_ = 0; ///< and t_{n+1}
-    std::vector<double> times_{0.0};    ///< t_0 … t_n
-    std::vector<Vec3> slips_;           ///< s_0 … s_n
-    std::vector<double> crossovers_;    ///< ℓ_c of each interval
+    double newestWeight_ = 0, end_ = 0;          ///< and t_{n+1}
+    std::vector<double> times_{0.0};             ///< t_0 … t_n
+    std::vector<Vec3> slips_;                    ///< s_0 … s_n
+    std::vector<IntervalCrossovers> crossovers_; ///< ℓ_c of each interval
+    std::vector<double> moments_;                ///< M_j of the start mode on each interval
+    std::vector<double> phis_{1.0};              ///< φ_0 … φ_n
 };
 
+/// M = ∫(τ − τ_mid) φ' dτ of the start mode over a step of length h: h (φ_a + φ_b)/2 − ∫φ.
+inline double startModeMoment(const StartModeStep& modes, double h) {
+    return 0.5 * h * (modes.before.value + modes.after.value) -
+           (modes.after.integral - modes.before.integral);
+}
+
 /// The Basset layout and what the production memory adds to it: per tail term, the entry
-/// weight a_i e^{−x_i L_w}(1 − e^{−x_i h})/(x_i² h) of a regular interval, and its decay
-/// over the run.
+/// weight a_i e^{−x_i L_w}(1 − e^{−x_i h})/(x_i² h) of a regular interval, its decay over the
+/// run, and the weight a_i e^{−x_i (L_w + h/2)} of its start-mode moment.
 struct FiniteReynoldsLayout {
     WindowTailLayout base;
     double horizon = 0; ///< the run's length: Λ = entry lag + horizon
     std::vector<double> entryWeight;
     std::vector<double> horizonDecay; ///< e^{−x_i horizon}
     std::vector<double> logRate;      ///< ln x_i
+    std::vector<double> momentWeight; ///< a_i e^{−x_i (L_w + h/2)}
 
     static FiniteReynoldsLayout make(const WindowTailLayout& base, double horizon);
-    /// Doubles per particle: slips at lags 0 … window, the window's crossovers, the tail sums,
-    /// the accumulator, the first step's length, the steps taken and the jump's crossover.
+    /// Doubles per particle: slips at lags 0 … window; per window interval its two crossovers,
+    /// start-mode moment and increment of φ; per tail term the sums of the remainder's
+    /// increments (3), the start mode's and its moments; the accumulators of the remainder (3)
+    /// and of the start mode; the first step's length, the steps taken and the jump's crossover.
     std::size_t doubles() const {
-        return 3 * (base.window + 1) + base.window + 3 * base.tail.size() + 3 + 3;
+        return 3 * (base.window + 1) + 4 * base.window + 5 * base.tail.size() + 4 + 3;
     }
 };
 
@@ -93,19 +123,41 @@ public:
     void start(const Vec3& releaseSlip, double jumpCrossover);
     HistoryKernel kernel() const { return {}; }
     double newestWeight() const { return newestWeight_; }
-    Vec3 beginStep(double stepLength);
-    void endStep(const Vec3& slip);
+    /// As FiniteReynoldsFullHistory.
+    Vec3 beginStep(double stepLength, const StartModeStep& modes = {},
+                   const Vec3& startSlip = Vec3::Zero());
+    void endStep(const Vec3& remainder, const StartModeStep& modes = {},
+                 const Vec3& startSlip = Vec3::Zero());
 
 private:
+    /// One increment entering the tail, or the jump (length 0, no start mode).
+    struct TailEntry {
+        Vec3 remainder;     ///< increment of ρ (or the jump)
+        double startMode;   ///< increment of φ
+        double moment;      ///< M of the interval
+        double lag, length; ///< its newer end's lag now, and its length [s]
+        IntervalCrossovers crossovers;
+    };
+
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
-    double* crossovers() const { return state_ + 3 * (window_ + 1); }
-    double* tail() const { return crossovers() + window_; }
-    double* accumulator() const { return tail() + 3 * terms_; }
-    double& firstStep() const { return accumulator()[3]; }
-    double& steps() const { return accumulator()[4]; }
-    double& jumpCrossover() const { return accumulator()[5]; }
-    /// Adds a slip increment entering the tail at `lag` [s], spread over `length` (0: the jump).
-    void enterTail(const Vec3& increment, double lag, double length, double crossover);
+    double* remainderCrossovers() const { return state_ + 3 * (window_ + 1); }
+    double* startModeCrossovers() const { return remainderCrossovers() + window_; }
+    double* moments() const { return startModeCrossovers() + window_; }
+    double* startIncrements() const { return moments() + window_; }
+    double* tail() const { return startIncrements() + window_; }
+    double* startTail() const { return tail() + 3 * terms_; }
+    double* momentTail() const { return startTail() + terms_; }
+    double* accumulator() const { return momentTail() + terms_; }
+    double& startAccumulator() const { return accumulator()[3]; }
+    double& firstStep() const { return accumulator()[4]; }
+    double& steps() const { return accumulator()[5]; }
+    double& jumpCrossover() const { return accumulator()[6]; }
+    void enterTail(const TailEntry& entry);
+    /// Weights of an entry for one term i: its entry weight now and that of its moment.
+    struct TermWeights {
+        double entry, moment;
+    };
+    TermWeights termWeights(std::size_t i, double lag, double length, bool regular) const;
 
     const FiniteReynoldsLayout& layout_;
     double* state_;

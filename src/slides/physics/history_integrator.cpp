@@ -329,7 +329,7 @@ StartModeStep startModeStep(double historyRate, const HistoryStart& start, doubl
                 spinStartMode(historyRate, kernel.viscousTime, start.age + h)};
     }
     const double alpha = rootPi * historyRate;
-    return {startMode(alpha, start.age), startMode(alpha, start.age + h)};
+    return {startMode(alpha, start.age), startMode(alpha, start.age + h), alpha};
 }
 
 template <typename Memory>
@@ -349,9 +349,18 @@ StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, Histor
     const StartMode& before = modes.before;
     const StartMode& after = modes.after;
     const Vec3 startIntegral = (after.integral - before.integral) * s0;
-    const Vec3 startHistory = (after.history - before.history) * s0;
     const Vec3 remainderBefore = step.gasStart - velocity - before.value * s0;
-    const Vec3 known = memory.beginStep(h);
+    // Basset's memories take the start mode's history in closed form; the finite-Reynolds ones
+    // (physics/finite_reynolds_history.h) take it into their own A.
+    constexpr bool memoryTakesStartMode = requires(Memory & m) { m.beginStep(h, modes, s0); };
+    Vec3 startHistory = (after.history - before.history) * s0;
+    Vec3 known;
+    if constexpr (memoryTakesStartMode) {
+        startHistory.setZero();
+        known = memory.beginStep(h, modes, s0);
+    } else {
+        known = memory.beginStep(h);
+    }
     const double newestWeight = memory.newestWeight();
     // v_{n+1} = u_{n+1} − s0 φ_{n+1} − ρ_{n+1}, and ρ_{n+1} is the one unknown of
     //   v_{n+1} = v_n + (1/τ)[s0 ΔΦ + h((1−θ)ρ_n + θρ_{n+1})] + h((1−θ)a_n + θa_{n+1})
@@ -362,7 +371,10 @@ StepResult advanceWithHistory(const SlipStep& step, const Vec3& velocity, Histor
                      step.historyRate * (startHistory + known - start.integral);
     const double diagonal = 1 + theta * h * step.dragRate + step.historyRate * newestWeight;
     const Vec3 remainder = rhs / diagonal;
-    memory.endStep(remainder);
+    if constexpr (memoryTakesStartMode)
+        memory.endStep(remainder, modes, s0);
+    else
+        memory.endStep(remainder);
     start.integral = newestWeight * remainder + known;
     start.age += h;
     const Vec3 newVelocity = step.gasEnd - after.value * s0 - remainder;

@@ -76,6 +76,7 @@ StartMode spinStartMode(double historyRate, double viscousTime, double age);
 struct StartModeStep {
     StartMode before{1, 0, 0};
     StartMode after{1, 0, 0};
+    double alpha = 0; ///< α of Basset's φ (0 for the spin kernel's or none), for φ inside the step
 };
 struct HistoryStart;
 StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,
