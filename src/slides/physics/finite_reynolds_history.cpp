@@ -42,6 +42,20 @@ IntervalCrossovers crossoversAfterRelease(const SlipKernel& kernel, double alpha
 /// tenth of the first intervals' share; one ℓ_c then serves both parts (one κ per tail term).
 constexpr std::size_t weightedIntervals = 64;
 
+/// The crossovers of interval `index` after release, [start, end], from the slip before it and
+/// the remainder ρ after it.
+IntervalCrossovers newInterval(const SlipKernel& kernel, const StartModeStep& modes,
+                               const Vec3& startSlip, std::size_t index, double start, double end,
+                               const Vec3& slipBefore, const Vec3& remainder) {
+    if (modes.alpha > 0 && index < weightedIntervals) {
+        return crossoversAfterRelease(kernel, modes.alpha, startSlip, start,
+                                      slipBefore - modes.before.value * startSlip, end, remainder);
+    }
+    const double crossover =
+        kernel.crossover(0.5 * (slipBefore + remainder + modes.after.value * startSlip));
+    return {crossover, crossover};
+}
+
 } // namespace
 
 FiniteReynoldsFullHistory::FiniteReynoldsFullHistory(const SlipKernel& kernel,
@@ -75,14 +89,8 @@ void FiniteReynoldsFullHistory::endStep(const Vec3& remainder, const StartModeSt
                                         const Vec3& startSlip) {
     const Vec3 slip = remainder + modes.after.value * startSlip;
     const double start = times_.back(), length = end_ - start;
-    if (modes.alpha > 0 && crossovers_.size() < weightedIntervals) {
-        crossovers_.push_back(crossoversAfterRelease(kernel_, modes.alpha, startSlip, start,
-                                                     slips_.back() - phis_.back() * startSlip, end_,
-                                                     remainder));
-    } else {
-        const double crossover = kernel_.crossover(0.5 * (slips_.back() + slip));
-        crossovers_.push_back({crossover, crossover});
-    }
+    crossovers_.push_back(newInterval(kernel_, modes, startSlip, crossovers_.size(), start, end_,
+                                      slips_.back(), remainder));
     moments_.push_back(startModeMoment(modes, length));
     phis_.push_back(modes.after.value);
     slips_.push_back(slip);
@@ -223,14 +231,9 @@ void FiniteReynoldsWindowTail::endStep(const Vec3& remainder, const StartModeSte
     const Vec3 slip = remainder + modes.after.value * startSlip;
     const double length = steps() == 0 ? firstStep() : layout_.base.h;
     const double start = steps() == 0 ? 0.0 : firstStep() + (steps() - 1) * layout_.base.h;
-    IntervalCrossovers crossovers{0, 0};
-    if (modes.alpha > 0 && steps() < weightedIntervals) {
-        crossovers = crossoversAfterRelease(kernel_, modes.alpha, startSlip, start,
-                                            lagged(0) - modes.before.value * startSlip,
-                                            start + length, remainder);
-    } else {
-        crossovers.remainder = crossovers.startMode = kernel_.crossover(0.5 * (lagged(0) + slip));
-    }
+    const IntervalCrossovers crossovers =
+        newInterval(kernel_, modes, startSlip, static_cast<std::size_t>(steps()), start,
+                    start + length, lagged(0), remainder);
     std::memmove(state_ + 3, state_, sizeof(double) * 3 * static_cast<std::size_t>(window_));
     Eigen::Map<Vec3> newest(state_);
     newest = slip;
