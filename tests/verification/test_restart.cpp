@@ -32,6 +32,7 @@ using test::slurp;
 enum class ExtraPhysics {
     none,
     unsteadyForces,       ///< history memory, spin and the rest of the Maxey–Riley state
+    finiteReynolds,       ///< Kim's history memory (per-interval crossovers, infinite at no slip)
     dispersionAndHeat,    ///< eddy states with their random-event counters, temperatures
     collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
     softSpheres,          ///< contact loads and the springs of touching contacts
@@ -51,6 +52,8 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
         insertAfter(text, "buoyancy    on;",
                     " history { model basset; } addedMass on; pressureGradient on;"
                     " lift saffmanMeiMagnus; spin on;");
+    if (physics == ExtraPhysics::finiteReynolds)
+        insertAfter(text, "buoyancy    on;", " history { model kim; }");
     if (physics == ExtraPhysics::dispersionAndHeat) {
         insertAfter(text, "buoyancy    on;",
                     " dispersion { model eddyInteraction; } heatTransfer { model ranzMarshall; }");
@@ -192,8 +195,12 @@ TEST_P(KilledRun, RestartsFromTheLastCheckpointToIdenticalFiles) {
 }
 
 std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
-    const char* physics[] = {"", "WithUnsteadyForces", "WithDispersionAndHeat",
-                             "WithCollisionsAndDeposit", "WithSoftSpheres"};
+    const char* physics[] = {"",
+                             "WithUnsteadyForces",
+                             "WithFiniteReynoldsHistory",
+                             "WithDispersionAndHeat",
+                             "WithCollisionsAndDeposit",
+                             "WithSoftSpheres"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
@@ -204,6 +211,7 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                          testing::Values(KillMoment{0, ExtraPhysics::none},
                                          KillMoment{150, ExtraPhysics::none},
                                          KillMoment{100, ExtraPhysics::unsteadyForces},
+                                         KillMoment{100, ExtraPhysics::finiteReynolds},
                                          KillMoment{100, ExtraPhysics::dispersionAndHeat},
                                          KillMoment{100, ExtraPhysics::collisionsAndDeposit},
                                          KillMoment{100, ExtraPhysics::softSpheres}),
