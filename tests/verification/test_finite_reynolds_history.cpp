@@ -229,11 +229,10 @@ TEST(FiniteReynoldsHistory, EquationOfMotionReleasedWithTheFlowIsSecondOrder) {
 TEST(FiniteReynoldsHistory, StartModeCutsTheErrorOfAReleaseWithSlip) {
     // Released at rest into a stream: s − s0 ∝ √t. Without a start mode the slip's linear
     // intervals err O(h^(3/2)) in A for good (order 1.5, measured 1.46 … 1.49). Basset's start
-    // mode with the moment correction and ℓ_c weighted per part (physics/
-    // finite_reynolds_history.h) leaves O(h^(3/2)) only from the variance of ℓ_c ∝ series in √τ
-    // over the first intervals: errors 18–62 times smaller (Mei & Adrian), 8–37 (Kim) over
-    // h = T/50 … T/3200, the orders drifting from 2 toward 1.5 (1.26 and 1.53 at T/3200); the
-    // test holds them below a tenth from h = T/100.
+    // mode with the moment correction and ℓ_c averaged per part (physics/
+    // finite_reynolds_history.h): errors 42–145 times smaller (Mei & Adrian, orders rising to
+    // 1.80 at T/3200, the limit 2 as with ℓ_c frozen), 10–820 (Kim, down to 5e-11 where the
+    // orders scatter) over h = T/50 … T/3200; the test holds them below a tenth from T/100.
     for (const auto& shape : {meiAdrianShape, kimShape}) {
         std::printf("c1 = %.1f, reference, released at rest into a stream, naive start:\n",
                     shape.exponent);

@@ -1,5 +1,7 @@
 #include "slides/physics/finite_reynolds_history.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -8,33 +10,35 @@ namespace slides {
 
 namespace {
 
-/// The two crossovers of an interval [t_a, t_b] after a release with slip s0, with
-/// s = s0 φ(τ) + ρ, ρ linear over the interval. ℓ_c varies there as a series in √τ, and its
-/// mean must be weighted as each part's increments are: dρ ∝ dτ, but s0 dφ = s0 φ' dτ with
-/// φ' ∝ τ^(−½) at first. One mean for both (at the nodes) misses the right one by O(h/j) on
-/// interval j, O(h^(3/2)) in A in all; so each part gets its own, by 2-point Gauss–Legendre in
-/// u = √τ (where ℓ_c is smooth), weighted by dτ/du = 2u and dφ/du = 2u α² φ − 2α/√π.
+/// The crossovers of an interval [t_a, t_b] after a release with slip s0, with s = s0 φ(τ) + ρ,
+/// ρ linear over the interval. ℓ_c varies there as a series in √τ, and the kernel must be
+/// averaged over the interval as each part's increments are: dρ ∝ dτ, but s0 dφ = s0 φ' dτ with
+/// φ' ∝ τ^(−½) at first. One ℓ_c at the nodes' mean slip misses by O(h/j) on interval j,
+/// O(h^(3/2)) in A in all; so the remainder takes the dτ-weighted mean of ℓ_c, and the start
+/// mode, whose increments are larger (∝ √h), the 2-point Gauss–Legendre rule itself, in u = √τ
+/// (where ℓ_c is smooth) weighted by dφ/du = 2u α² φ − 2α/√π: its kernel is the mixture of two.
 IntervalCrossovers crossoversAfterRelease(const SlipKernel& kernel, double alpha,
                                           const Vec3& startSlip, double start,
                                           const Vec3& remainderStart, double end,
                                           const Vec3& remainderEnd) {
     const double a = std::sqrt(start), b = std::sqrt(end), offset = 0.5 / std::sqrt(3.0);
-    double remainder = 0, remainderWeights = 0, startMode = 0, startModeWeights = 0;
-    for (const double side : {-1.0, 1.0}) {
-        const double u = 0.5 * (a + b) + side * offset * (b - a);
+    IntervalCrossovers crossovers{0, {0, 0}, 0};
+    double remainderWeights = 0;
+    std::array<double, 2> startWeights{};
+    for (std::size_t k = 0; k < 2; ++k) {
+        const double u = 0.5 * (a + b) + (k == 0 ? -offset : offset) * (b - a);
         const double phi = scaledComplementaryError(alpha * u);
         const double fraction = (u * u - start) / (end - start);
         const double crossover = kernel.crossover(
             phi * startSlip + (1 - fraction) * remainderStart + fraction * remainderEnd);
-        const double stepWeight = 2 * u;
-        const double startWeight =
-            2 * u * alpha * alpha * phi - 2 * alpha / std::sqrt(std::numbers::pi);
-        remainder += stepWeight * crossover;
-        remainderWeights += stepWeight;
-        startMode += startWeight * crossover;
-        startModeWeights += startWeight;
+        crossovers.remainder += 2 * u * crossover;
+        remainderWeights += 2 * u;
+        crossovers.startMode[k] = crossover;
+        startWeights[k] = 2 * u * alpha * alpha * phi - 2 * alpha / std::sqrt(std::numbers::pi);
     }
-    return {remainder / remainderWeights, startMode / startModeWeights};
+    crossovers.remainder /= remainderWeights;
+    crossovers.share = startWeights[0] / (startWeights[0] + startWeights[1]);
+    return crossovers;
 }
 
 /// Intervals after a release whose ℓ_c is weighted per part. Beyond them both weightings agree
@@ -53,7 +57,7 @@ IntervalCrossovers newInterval(const SlipKernel& kernel, const StartModeStep& mo
     }
     const double crossover =
         kernel.crossover(0.5 * (slipBefore + remainder + modes.after.value * startSlip));
-    return {crossover, crossover};
+    return {crossover, {crossover, crossover}, 1};
 }
 
 } // namespace
@@ -77,10 +81,15 @@ Vec3 FiniteReynoldsFullHistory::beginStep(double stepLength, const StartModeStep
     for (std::size_t j = 0; j < n; ++j) {
         const double lag = end - times_[j + 1], length = times_[j + 1] - times_[j];
         const Vec3 startModeIncrement = (phis_[j + 1] - phis_[j]) * startSlip;
+        const IntervalCrossovers& crossovers = crossovers_[j];
         known += (slips_[j + 1] - slips_[j] - startModeIncrement) *
-                     tables.intervalWeight(lag, length, crossovers_[j].remainder) +
-                 startModeIncrement * tables.intervalWeight(lag, length, crossovers_[j].startMode);
-        momentSum += tables.kernel(lag + 0.5 * length, crossovers_[j].startMode) * moments_[j];
+                     tables.intervalWeight(lag, length, crossovers.remainder) +
+                 startModeIncrement * crossovers.startModeWeight([&](double crossover) {
+                     return tables.intervalWeight(lag, length, crossover);
+                 });
+        momentSum += moments_[j] * crossovers.startModeWeight([&](double crossover) {
+            return tables.kernel(lag + 0.5 * length, crossover);
+        });
     }
     return known - momentSum * startSlip;
 }
@@ -150,21 +159,28 @@ void FiniteReynoldsWindowTail::enterTail(const TailEntry& entry) {
                                  : tables.intervalWeight(oldest, entry.length, crossover);
     };
     const bool startMode = entry.startMode != 0 || entry.moment != 0;
-    double constant = exactAtOldest(entry.crossovers.remainder);
-    double startConstant = startMode ? exactAtOldest(entry.crossovers.startMode) : 0;
-    const double logRemainder = std::log(entry.crossovers.remainder); // +∞ with no slip: κ = 1
-    const double logStart = std::log(entry.crossovers.startMode);
+    const IntervalCrossovers& crossovers = entry.crossovers;
+    const bool oneCrossover = crossovers.startMode[0] == crossovers.remainder &&
+                              crossovers.startMode[1] == crossovers.remainder;
+    double constant = exactAtOldest(crossovers.remainder);
+    double startConstant = startMode ? crossovers.startModeWeight(exactAtOldest) : 0;
+    const double logRemainder = std::log(crossovers.remainder); // +∞ with no slip: κ = 1
+    const std::array<double, 2> logStart{std::log(crossovers.startMode[0]),
+                                         std::log(crossovers.startMode[1])};
     for (std::size_t i = 0; i < terms_; ++i) {
         const TermWeights weights = termWeights(i, entry.lag, entry.length, regular);
         const double decay = layout_.horizonDecay[i];
-        const double remainderKappa = tables.spectrumRatioAtLog(layout_.logRate[i] + logRemainder);
+        const double logRate = layout_.logRate[i];
+        const double remainderKappa = tables.spectrumRatioAtLog(logRate + logRemainder);
         const double remainderWeight = weights.entry * remainderKappa;
         constant += remainderWeight * decay;
         Eigen::Map<Vec3>(tail() + 3 * i) -= remainderWeight * entry.remainder;
         if (!startMode) continue;
-        const double kappa = entry.crossovers.startMode == entry.crossovers.remainder
-                                 ? remainderKappa
-                                 : tables.spectrumRatioAtLog(layout_.logRate[i] + logStart);
+        const double kappa =
+            oneCrossover
+                ? remainderKappa
+                : crossovers.share * tables.spectrumRatioAtLog(logRate + logStart[0]) +
+                      (1 - crossovers.share) * tables.spectrumRatioAtLog(logRate + logStart[1]);
         startConstant += weights.entry * kappa * decay;
         startTail()[i] -= weights.entry * kappa * entry.startMode;
         momentTail()[i] += weights.moment * kappa * entry.moment;
@@ -192,12 +208,15 @@ Vec3 FiniteReynoldsWindowTail::beginStep(double stepLength, const StartModeStep&
     for (int m = 1; m <= std::min(window_ - 1, n); ++m) {
         const double length = m == n ? firstStep() : h;
         const double startIncrement = startIncrements()[m - 1];
+        const IntervalCrossovers crossovers = crossoversOf(m - 1);
         known += (lagged(m - 1) - lagged(m) - startIncrement * startSlip) *
-                 tables.intervalWeight(m * h, length, remainderCrossovers()[m - 1]);
-        startSum +=
-            startIncrement * tables.intervalWeight(m * h, length, startModeCrossovers()[m - 1]);
-        momentSum +=
-            tables.kernel(m * h + 0.5 * length, startModeCrossovers()[m - 1]) * moments()[m - 1];
+                 tables.intervalWeight(m * h, length, crossovers.remainder);
+        startSum += startIncrement * crossovers.startModeWeight([&](double crossover) {
+            return tables.intervalWeight(m * h, length, crossover);
+        });
+        momentSum += moments()[m - 1] * crossovers.startModeWeight([&](double crossover) {
+            return tables.kernel(m * h + 0.5 * length, crossover);
+        });
     }
     if (n < window_) known += tables.firstIntegral(end, jumpCrossover()) * lagged(n);
     for (std::size_t i = 0; i < terms_; ++i) {
@@ -208,13 +227,10 @@ Vec3 FiniteReynoldsWindowTail::beginStep(double stepLength, const StartModeStep&
     if (n >= window_) {
         const int m = window_ - 1; // the interval leaving the window
         const double startIncrement = startIncrements()[m];
-        enterTail({lagged(m) - lagged(window_) - startIncrement * startSlip,
-                   startIncrement,
-                   moments()[m],
-                   window_ * h,
-                   n == window_ ? firstStep() : h,
-                   {remainderCrossovers()[m], startModeCrossovers()[m]}});
-        if (n == window_) enterTail({lagged(window_), 0, 0, end, 0, {jumpCrossover(), 1}});
+        enterTail({lagged(m) - lagged(window_) - startIncrement * startSlip, startIncrement,
+                   moments()[m], window_ * h, n == window_ ? firstStep() : h, crossoversOf(m)});
+        const double jump = jumpCrossover();
+        if (n == window_) enterTail({lagged(window_), 0, 0, end, 0, {jump, {jump, jump}, 1}});
     }
     known += Vec3(accumulator());
     startSum += startAccumulator();
@@ -238,11 +254,12 @@ void FiniteReynoldsWindowTail::endStep(const Vec3& remainder, const StartModeSte
     Eigen::Map<Vec3> newest(state_);
     newest = slip;
     const auto older = sizeof(double) * static_cast<std::size_t>(window_ - 1);
-    for (double* perInterval :
-         {remainderCrossovers(), startModeCrossovers(), moments(), startIncrements()})
+    std::memmove(this->crossovers() + 4, this->crossovers(), 4 * older);
+    for (double* perInterval : {moments(), startIncrements()})
         std::memmove(perInterval + 1, perInterval, older);
-    remainderCrossovers()[0] = crossovers.remainder;
-    startModeCrossovers()[0] = crossovers.startMode;
+    const std::array<double, 4> newestCrossovers{crossovers.remainder, crossovers.startMode[0],
+                                                 crossovers.startMode[1], crossovers.share};
+    std::copy(newestCrossovers.begin(), newestCrossovers.end(), this->crossovers());
     moments()[0] = startModeMoment(modes, length);
     startIncrements()[0] = modes.after.value - modes.before.value;
     steps() += 1;

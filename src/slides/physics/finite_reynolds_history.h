@@ -30,9 +30,9 @@
 // integral, closed form):
 //   A ≈ A_linear(s) − s0 Σ_j K̂(t − τ_mid,j; ℓ_c,j) M_j,
 // the sum by the window and a scalar exponential tail like the slip's. ℓ_c follows |s|, a series
-// in √τ there, so each part's increments get their own weighted mean of it on the first 64
-// intervals (dρ ∝ dτ, dφ ∝ τ^(−½) dτ). What remains is the variance of ℓ_c over the first
-// intervals, O(h^(3/2)) with a small constant: the error is 10–60 times below the naive start's
+// in √τ there, so on the first 64 intervals each part's increments average the kernel their own
+// way (dρ ∝ dτ; dφ ∝ τ^(−½) dτ, by a 2-point rule in √τ whose two ℓ_c the start mode keeps as a
+// mixture). The error is 40–800 times below the naive start's, and converges toward order 2
 // (measured in tests/verification/test_finite_reynolds_history.cpp).
 //
 //     physics { history { model meiAdrian; accuracy 1e-3; } }   // or kim
@@ -42,6 +42,7 @@
 #include "slides/physics/finite_reynolds_kernel.h"
 #include "slides/physics/history_integrator.h"
 
+#include <array>
 #include <vector>
 
 namespace slides {
@@ -56,9 +57,17 @@ struct SlipKernel {
     }
 };
 
-/// An interval's ℓ_c for the increments of the remainder ρ and of the start mode s0 φ.
+/// An interval's ℓ_c for the increments of the remainder ρ, and for those of the start mode
+/// s0 φ: two values (at the nodes of a 2-point rule) with their shares of the increment.
 struct IntervalCrossovers {
-    double remainder, startMode;
+    double remainder;
+    std::array<double, 2> startMode;
+    double share; ///< of startMode[0]; 1 − share of startMode[1]
+
+    /// The weight of the start mode's increment under a kernel integral f(ℓ_c).
+    template <typename Integral> double startModeWeight(const Integral& f) const {
+        return share * f(startMode[0]) + (1 - share) * f(startMode[1]);
+    }
 };
 
 /// Reference memory: every past slip and interval, O(n) work per step, any step lengths.
@@ -105,12 +114,12 @@ struct FiniteReynoldsLayout {
     std::vector<double> momentWeight; ///< a_i e^{−x_i (L_w + h/2)}
 
     static FiniteReynoldsLayout make(const WindowTailLayout& base, double horizon);
-    /// Doubles per particle: slips at lags 0 … window; per window interval its two crossovers,
+    /// Doubles per particle: slips at lags 0 … window; per window interval its crossovers (4),
     /// start-mode moment and increment of φ; per tail term the sums of the remainder's
     /// increments (3), the start mode's and its moments; the accumulators of the remainder (3)
     /// and of the start mode; the first step's length, the steps taken and the jump's crossover.
     std::size_t doubles() const {
-        return 3 * (base.window + 1) + 4 * base.window + 5 * base.tail.size() + 4 + 3;
+        return 3 * (base.window + 1) + 6 * base.window + 5 * base.tail.size() + 4 + 3;
     }
 };
 
@@ -140,9 +149,13 @@ private:
     };
 
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
-    double* remainderCrossovers() const { return state_ + 3 * (window_ + 1); }
-    double* startModeCrossovers() const { return remainderCrossovers() + window_; }
-    double* moments() const { return startModeCrossovers() + window_; }
+    /// Per window interval: its IntervalCrossovers, 4 doubles.
+    double* crossovers() const { return state_ + 3 * (window_ + 1); }
+    IntervalCrossovers crossoversOf(int interval) const {
+        const double* c = crossovers() + 4 * interval;
+        return {c[0], {c[1], c[2]}, c[3]};
+    }
+    double* moments() const { return crossovers() + 4 * window_; }
     double* startIncrements() const { return moments() + window_; }
     double* tail() const { return startIncrements() + window_; }
     double* startTail() const { return tail() + 3 * terms_; }
