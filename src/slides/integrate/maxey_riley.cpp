@@ -30,10 +30,10 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
         finiteReynoldsTables_ = &FiniteReynoldsKernel::of(
             physics.history == HistoryModel::kim ? kimShape : meiAdrianShape);
     }
-    if (history_) {
+    if (history_) { // s0, I_n (A_n for the finite-Reynolds kernels), memory
         historyOffset_ = width_;
         width_ += 6 + (finiteReynolds_ ? finiteReynolds_->doubles() : memory_->doubles());
-    } // s0, I_n (A_n), memory
+    }
     if (spinHistory_) {
         spinHistoryOffset_ = width_;
         width_ += 6 + memory_->doubles(); // σ0, I_n, memory

@@ -10,7 +10,7 @@
 //   a_H = r_H d/dt ∫_0^t (u − v)(τ)/√(t − τ) dτ,  r_H = 9 ρf √ν / (2 √π (ρp + C_A ρf) R),
 // which already contains Maxey's initial-slip term (u − v)(0)/√t.
 //
-//     physics { history { model basset; accuracy 1e-3; } }   // model none | basset
+//     physics { history { model basset; accuracy 1e-3; } }   // none | basset | meiAdrian | kim
 #pragma once
 
 #include <cmath>
