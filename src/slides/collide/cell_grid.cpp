@@ -1,88 +1,79 @@
 #include "slides/collide/cell_grid.h"
 
-#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace slides {
-
-CellGrid::Cell CellGrid::cellOf(const Vec3& point) const {
-    return {static_cast<std::int64_t>(std::floor(point.x() / cellSize_)),
-            static_cast<std::int64_t>(std::floor(point.y() / cellSize_)),
-            static_cast<std::int64_t>(std::floor(point.z() / cellSize_))};
-}
-
-const std::array<std::array<std::int64_t, 3>, 13>& CellGrid::forwardOffsets() {
-    static const auto offsets = [] {
-        std::array<std::array<std::int64_t, 3>, 13> forward{};
-        std::size_t n = 0;
-        for (std::int64_t dx = -1; dx <= 1; ++dx)
-            for (std::int64_t dy = -1; dy <= 1; ++dy)
-                for (std::int64_t dz = -1; dz <= 1; ++dz)
-                    if (std::array<std::int64_t, 3>{dx, dy, dz} >
-                        std::array<std::int64_t, 3>{0, 0, 0})
-                        forward[n++] = {dx, dy, dz};
-        return forward;
-    }();
-    return offsets;
-}
-
-std::size_t CellGrid::bucketOf(const Cell& cell) const {
-    if (dense_) {
-        std::int64_t index = 0;
-        for (int axis = 2; axis >= 0; --axis) {
-            const std::int64_t offset = cell[axis] - lowestCell_[axis];
-            // Outside the box: the last bucket, which holds no point.
-            if (offset < 0 || offset >= cellsPerAxis_[axis]) return bucketStart_.size() - 2;
-            index = index * cellsPerAxis_[axis] + offset;
-        }
-        return static_cast<std::size_t>(index);
-    }
-    // The primes of Teschner et al. (2003), then a multiplicative mix of the high bits.
-    const auto key = static_cast<std::uint64_t>(cell[0]) * 73856093u ^
-                     static_cast<std::uint64_t>(cell[1]) * 19349663u ^
-                     static_cast<std::uint64_t>(cell[2]) * 83492791u;
-    const std::uint64_t mixed = (key ^ (key >> 29)) * 0xbf58476d1ce4e5b9ull;
-    return static_cast<std::size_t>((mixed ^ (mixed >> 32)) % (bucketStart_.size() - 1));
-}
 
 void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     cellSize_ = cellSize;
     const std::size_t count = points.size();
-    cells_.resize(count);
-    Cell lowest{}, highest{};
-    for (std::size_t i = 0; i < count; ++i) {
-        cells_[i] = cellOf(points[i]);
-        for (int axis = 0; axis < 3; ++axis) {
-            lowest[axis] = i == 0 ? cells_[i][axis] : std::min(lowest[axis], cells_[i][axis]);
-            highest[axis] = i == 0 ? cells_[i][axis] : std::max(highest[axis], cells_[i][axis]);
-        }
+    Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 highest = -lowest;
+    for (const Vec3& point : points) {
+        if (!point.allFinite())
+            throw std::domain_error("collision grid: a particle's position is not finite");
+        lowest = lowest.cwiseMin(point);
+        highest = highest.cwiseMax(point);
     }
-    // Dense when the box's cells are few per point (checked axis by axis against overflow).
-    const double limit = static_cast<double>(denseCellsPerPoint) * static_cast<double>(count) + 64;
+    origin_ = count == 0 ? Vec3::Zero() : lowest;
+    // The box's cells, with one empty layer on either side across y and z: the rows of a
+    // cell's neighbours then never run past the box's edge into the next row.
     double boxCells = 1;
     for (int axis = 0; axis < 3; ++axis) {
-        cellsPerAxis_[axis] = highest[axis] - lowest[axis] + 1;
-        boxCells *= static_cast<double>(cellsPerAxis_[axis]);
+        const double span =
+            count == 0 ? 1 : std::floor((highest[axis] - lowest[axis]) / cellSize) + 1;
+        const double cells = span + (axis == 0 ? 0 : 2);
+        boxCells *= cells;
+        if (!(boxCells < 0x1p62))
+            throw std::domain_error("collision grid: the particles span more than 2^62 cells of " +
+                                    std::to_string(cellSize) + " m; bound the domain");
+        cellsPerAxis_[axis] = static_cast<std::int64_t>(cells);
     }
-    dense_ = boxCells <= limit;
-    lowestCell_ = lowest;
-    // Dense: a bucket per box cell and an empty one for cells outside; hashed: 2N + 1.
-    const std::size_t buckets = dense_ ? static_cast<std::size_t>(boxCells) + 1 : 2 * count + 1;
-    bucketStart_.assign(buckets + 1, 0);
+    yStride_ = static_cast<Key>(cellsPerAxis_[2]);
+    xStride_ = yStride_ * static_cast<Key>(cellsPerAxis_[1]);
+
+    keyed_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Vec3 offset = (points[i] - origin_) / cellSize;
+        const auto cell = [&](int axis) { return static_cast<Key>(std::floor(offset[axis])); };
+        keyed_[i] = {cell(0) * xStride_ + (cell(1) + 1) * yStride_ + cell(2) + 1,
+                     static_cast<std::uint32_t>(i)};
+    }
+    sortByKey(static_cast<Key>(boxCells));
+
     sorted_.resize(count);
-    sortedCells_.resize(count);
-    auto& bucket = bucketOfPoint_;
-    bucket.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        bucket[i] = bucketOf(cells_[i]);
-        ++bucketStart_[bucket[i] + 1];
+    cellKey_.clear();
+    cellStart_.clear();
+    for (std::size_t slot = 0; slot < count; ++slot) {
+        sorted_[slot] = keyed_[slot].point;
+        if (slot == 0 || keyed_[slot].key != keyed_[slot - 1].key) {
+            cellKey_.push_back(keyed_[slot].key);
+            cellStart_.push_back(static_cast<std::uint32_t>(slot));
+        }
     }
-    for (std::size_t b = 1; b < bucketStart_.size(); ++b) bucketStart_[b] += bucketStart_[b - 1];
-    auto& next = nextSlot_;
-    next.assign(bucketStart_.begin(), bucketStart_.end() - 1);
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::uint32_t slot = next[bucket[i]]++;
-        sorted_[slot] = static_cast<std::uint32_t>(i);
-        sortedCells_[slot] = cells_[i];
+    cellKey_.push_back(std::numeric_limits<Key>::max());
+    cellStart_.push_back(static_cast<std::uint32_t>(count));
+}
+
+void CellGrid::sortByKey(Key keys) {
+    // Least significant digit first, each a stable counting sort (Algorithm 4): the digits
+    // split the key's bits evenly, at most 11 bits each.
+    int bits = 0;
+    while (bits < 64 && (keys - 1) >> bits != 0) ++bits;
+    const int passes = (bits + 10) / 11;
+    const int width = passes == 0 ? 0 : (bits + passes - 1) / passes;
+    const std::size_t digits = std::size_t{1} << width;
+    spare_.resize(keyed_.size());
+    for (int pass = 0; pass < passes; ++pass) {
+        const int shift = pass * width;
+        digitCount_.assign(digits + 1, 0);
+        for (const Keyed& entry : keyed_) ++digitCount_[((entry.key >> shift) & (digits - 1)) + 1];
+        for (std::size_t d = 1; d <= digits; ++d) digitCount_[d] += digitCount_[d - 1];
+        for (const Keyed& entry : keyed_)
+            spare_[digitCount_[(entry.key >> shift) & (digits - 1)]++] = entry;
+        keyed_.swap(spare_);
     }
 }
 

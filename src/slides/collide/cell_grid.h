@@ -1,13 +1,14 @@
-// CellGrid: the broad phase — points binned into cubic cells by a counting sort over their
-// cells' buckets, so that only points in the same or nearby cells are compared.
+// CellGrid: the broad phase — points binned into cubic cells, so that only points in the same
+// or neighbouring cells are compared.
 //
-// Reference: Algorithm 4 and Eq. 4.36 of the reference (binning, O(N_p) contact search).
-// A compact cloud (a bounding box of at most denseCellsPerPoint cells a point) gets one bucket
-// per cell of that box, in x-fastest order, so that neighbouring cells lie near in memory. A long
-// thin spray gets hashed buckets instead (Teschner et al. 2003, "Optimized spatial hashing for
-// collision detection of deformable objects"), twice the number of points: memory stays O(N)
-// however long the spray, at the price of a cache miss per neighbour cell. A bucket shared by
-// two cells only costs a comparison of cell coordinates.
+// Reference: Algorithm 4 and Eq. 4.36 of the reference (binning by counting sort, O(N_p)
+// contact search). The cells of the points' bounding box, with an empty margin across y and z,
+// are numbered x-slowest, z-fastest; the points are sorted by that number with a counting sort
+// per 11-bit digit (least significant first, so stable), and only the occupied cells are kept,
+// in that order. Memory is O(N) however long and thin the spray. A cell's forward neighbours
+// are its successor (z + 1) and four rows of three consecutive numbers; since the rows' numbers
+// grow with the cell's, one pointer per row walks the occupied cells alongside (a merge), so the
+// search reads memory in order, without hashing.
 #pragma once
 
 #include "slides/core/vector.h"
@@ -26,45 +27,45 @@ namespace slides {
 
 class CellGrid {
 public:
-    using Cell = std::array<std::int64_t, 3>;
-
-    /// Bins the points into cubes of edge cellSize [m] (O(N), counting sort).
+    /// Bins the points into cubes of edge cellSize [m] (O(N)). Throws std::domain_error for a
+    /// point that is not finite or a box of more cells than a 64-bit number can count.
     void build(const std::vector<Vec3>& points, double cellSize);
 
-    std::size_t size() const { return cells_.size(); }
+    std::size_t size() const { return sorted_.size(); }
     double cellSize() const { return cellSize_; }
-    /// Whether the last build chose one bucket per cell of the bounding box (else hashed).
-    bool dense() const { return dense_; }
 
-    /// The most cells a point a dense grid may spend.
-    static constexpr std::int64_t denseCellsPerPoint = 8;
-
-    /// Buckets of the grid, for splitting forEachPairInBuckets among threads.
-    std::size_t bucketCount() const { return bucketStart_.size() - 1; }
+    /// Occupied cells of the grid, for splitting forEachPairInCells among threads.
+    std::size_t occupiedCellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
 
     /// Calls visit(i, j) for every pair of points in the same cell or in neighbouring cells
-    /// whose first cell lies in buckets [first, last): over all buckets, each pair of points
-    /// closer than one cell edge exactly once. Neighbour cells are looked up once per occupied
-    /// cell (13 of the 26, one of each opposite pair), not once per point.
+    /// whose first cell is among occupied cells [first, last): over all of them, each pair of
+    /// points closer than one cell edge exactly once (13 of the 26 neighbours a cell, one of
+    /// each opposite pair).
     template <typename Visit>
-    void forEachPairInBuckets(std::size_t first, std::size_t last, Visit visit) const {
-        for (std::size_t bucket = first; bucket < last; ++bucket) {
-            const std::uint32_t begin = bucketStart_[bucket], end = bucketStart_[bucket + 1];
-            for (std::uint32_t k = begin; k < end; ++k) {
-                const Cell& cell = sortedCells_[k];
-                if (!firstOfItsCell(k, begin)) continue; // a cell sharing the bucket, done
-                for (std::uint32_t a = k; a < end; ++a) {
-                    if (!sameCell(sortedCells_[a], cell)) continue;
-                    for (std::uint32_t b = a + 1; b < end; ++b)
-                        if (sameCell(sortedCells_[b], cell)) visit(sorted_[a], sorted_[b]);
-                }
-                for (const auto& offset : forwardOffsets()) {
-                    const Cell next{cell[0] + offset[0], cell[1] + offset[1], cell[2] + offset[2]};
-                    forEachPointIn(next, [&](std::uint32_t j) {
-                        for (std::uint32_t a = k; a < end; ++a)
-                            if (sameCell(sortedCells_[a], cell)) visit(sorted_[a], j);
-                    });
-                }
+    void forEachPairInCells(std::size_t first, std::size_t last, Visit visit) const {
+        if (first >= last) return;
+        // The rows (dx, dy) = (0, 1), (1, −1), (1, 0), (1, 1), each of dz = −1, 0, 1.
+        const std::array<Key, 4> rowOffset{yStride_, xStride_ - yStride_, xStride_,
+                                           xStride_ + yStride_};
+        std::array<std::size_t, 4> next{};
+        for (std::size_t row = 0; row < 4; ++row)
+            next[row] = firstCellFrom(cellKey_[first] + rowOffset[row] - 1);
+        for (std::size_t cell = first; cell < last; ++cell) {
+            const std::uint32_t begin = cellStart_[cell], end = cellStart_[cell + 1];
+            const auto visitWith = [&](std::size_t other) {
+                for (std::uint32_t a = begin; a < end; ++a)
+                    for (std::uint32_t b = cellStart_[other]; b < cellStart_[other + 1]; ++b)
+                        visit(sorted_[a], sorted_[b]);
+            };
+            for (std::uint32_t a = begin; a < end; ++a)
+                for (std::uint32_t b = a + 1; b < end; ++b) visit(sorted_[a], sorted_[b]);
+            const Key key = cellKey_[cell];
+            if (cellKey_[cell + 1] == key + 1) visitWith(cell + 1); // the sentinel never matches
+            for (std::size_t row = 0; row < 4; ++row) {
+                const Key lowest = key + rowOffset[row] - 1;
+                std::size_t& other = next[row];
+                while (cellKey_[other] < lowest) ++other;
+                for (std::size_t k = other; cellKey_[k] <= lowest + 2; ++k) visitWith(k);
             }
         }
     }
@@ -73,62 +74,63 @@ public:
     /// centre can touch (a superset of the points closer than reach).
     template <typename Visit>
     void forEachPointWithin(const Vec3& centre, double reach, Visit visit) const {
-        if (cells_.empty()) return;
+        if (sorted_.empty()) return;
         const auto range = static_cast<std::int64_t>(std::ceil(reach / cellSize_));
-        forEachPointNear(cellOf(centre), range, visit);
+        const Vec3 offset = (centre - origin_) / cellSize_;
+        std::array<std::int64_t, 3> low{}, high{};
+        for (int axis = 0; axis < 3; ++axis) {
+            // Clamped to the box in double first: a far centre must not overflow an integer.
+            const double cell = std::floor(offset[axis]) + (axis == 0 ? 0 : 1);
+            const auto last = static_cast<double>(cellsPerAxis_[axis] - 1);
+            low[axis] = static_cast<std::int64_t>(std::clamp(cell - range, 0.0, last + 1));
+            high[axis] = static_cast<std::int64_t>(std::clamp(cell + range, -1.0, last));
+        }
+        for (std::int64_t x = low[0]; x <= high[0]; ++x)
+            for (std::int64_t y = low[1]; y <= high[1]; ++y) {
+                if (low[2] > high[2]) return;
+                const Key row = static_cast<Key>(x) * xStride_ + static_cast<Key>(y) * yStride_;
+                for (std::size_t k = firstCellFrom(row + static_cast<Key>(low[2]));
+                     cellKey_[k] <= row + static_cast<Key>(high[2]); ++k)
+                    for (std::uint32_t slot = cellStart_[k]; slot < cellStart_[k + 1]; ++slot)
+                        visit(sorted_[slot]);
+            }
     }
 
 private:
-    Cell cellOf(const Vec3& point) const;
-    std::size_t bucketOf(const Cell& cell) const;
+    using Key = std::uint64_t;
 
-    static bool sameCell(const Cell& a, const Cell& b) {
-        return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    /// Sorts keyed_ by key, each below keys.
+    void sortByKey(Key keys);
+
+    /// The first occupied cell whose number is at least key (the sentinel if none).
+    std::size_t firstCellFrom(Key key) const {
+        return static_cast<std::size_t>(
+            std::lower_bound(cellKey_.begin(), cellKey_.end() - 1, key) - cellKey_.begin());
     }
 
-    /// Whether slot k holds the first point of its cell within the bucket starting at begin.
-    bool firstOfItsCell(std::uint32_t k, std::uint32_t begin) const {
-        for (std::uint32_t earlier = begin; earlier < k; ++earlier)
-            if (sameCell(sortedCells_[earlier], sortedCells_[k])) return false;
-        return true;
-    }
-
-    /// The 13 neighbour offsets that come after (0, 0, 0) in lexicographic order.
-    static const std::array<std::array<std::int64_t, 3>, 13>& forwardOffsets();
-
-    template <typename Visit> void forEachPointIn(const Cell& cell, Visit visit) const {
-        const std::size_t bucket = bucketOf(cell);
-        for (std::uint32_t k = bucketStart_[bucket]; k < bucketStart_[bucket + 1]; ++k) {
-            if (sameCell(sortedCells_[k], cell)) visit(sorted_[k]); // buckets can share cells
-        }
-    }
-
-    template <typename Visit>
-    void forEachPointNear(const Cell& centre, std::int64_t range, Visit visit) const {
-        for (std::int64_t dx = -range; dx <= range; ++dx)
-            for (std::int64_t dy = -range; dy <= range; ++dy)
-                for (std::int64_t dz = -range; dz <= range; ++dz)
-                    forEachPointIn({centre[0] + dx, centre[1] + dy, centre[2] + dz}, visit);
-    }
+    /// A point's number and index, as the sort moves them.
+    struct Keyed {
+        Key key;
+        std::uint32_t point;
+    };
 
     double cellSize_ = 1;
-    bool dense_ = false;
-    Cell lowestCell_{};                      ///< dense: the bounding box's first cell
-    Cell cellsPerAxis_{};                    ///< dense: the box's cells per axis
-    std::vector<Cell> cells_;                ///< each point's cell
-    std::vector<std::uint32_t> bucketStart_; ///< bucket b holds sorted_[start[b], start[b+1])
-    std::vector<std::uint32_t> sorted_;      ///< point indices ordered by bucket
-    std::vector<Cell> sortedCells_;          ///< their cells, beside them for locality
-    std::vector<std::size_t> bucketOfPoint_; ///< scratch of build
-    std::vector<std::uint32_t> nextSlot_;    ///< scratch of build
+    Vec3 origin_ = Vec3::Zero();                 ///< the corner of the box's first cell
+    std::array<std::int64_t, 3> cellsPerAxis_{}; ///< with the margins across y and z
+    Key yStride_ = 1, xStride_ = 1;              ///< a cell's number is x·xStride + y·yStride + z
+    std::vector<Key> cellKey_;              ///< occupied cells' numbers ascending, then a sentinel
+    std::vector<std::uint32_t> cellStart_;  ///< cell c holds sorted_[start[c], start[c+1])
+    std::vector<std::uint32_t> sorted_;     ///< point indices ordered by cell
+    std::vector<Keyed> keyed_, spare_;      ///< scratch of build
+    std::vector<std::uint32_t> digitCount_; ///< scratch of build
 };
 
 /// What test(a, b) finds for every pair of points the grid offers (forEachPairInBuckets), the
-/// pairs for which it returns a value: searched in parallel over blocks of buckets and joined in
-/// bucket order, so the list is the same for any number of threads.
+/// pairs for which it returns a value: searched in parallel over blocks of cells and joined in
+/// cell order, so the list is the same for any number of threads.
 template <typename Found, typename Test>
 std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
-    const auto buckets = static_cast<std::ptrdiff_t>(grid.bucketCount());
+    const auto cells = static_cast<std::ptrdiff_t>(grid.occupiedCellCount());
     constexpr std::ptrdiff_t chunk = 4096;
     std::vector<std::vector<Found>> perThread;
 #pragma omp parallel
@@ -141,14 +143,14 @@ std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
         perThread.resize(1);
         auto& found = perThread[0];
 #endif
-        // Static blocks in thread order: joining the threads' lists keeps the bucket order.
+        // Static blocks in thread order: joining the threads' lists keeps the cells' order.
 #pragma omp for schedule(static)
-        for (std::ptrdiff_t first = 0; first < buckets; first += chunk) {
-            const auto last = static_cast<std::size_t>(std::min(first + chunk, buckets));
-            grid.forEachPairInBuckets(static_cast<std::size_t>(first), last,
-                                      [&](std::uint32_t a, std::uint32_t b) {
-                                          if (auto pair = test(a, b)) found.push_back(*pair);
-                                      });
+        for (std::ptrdiff_t first = 0; first < cells; first += chunk) {
+            const auto last = static_cast<std::size_t>(std::min(first + chunk, cells));
+            grid.forEachPairInCells(static_cast<std::size_t>(first), last,
+                                    [&](std::uint32_t a, std::uint32_t b) {
+                                        if (auto pair = test(a, b)) found.push_back(*pair);
+                                    });
         }
     }
     std::vector<Found> all;
