@@ -17,6 +17,7 @@
 #include "slides/io/progress.h"
 #include "slides/io/run_output.h"
 #include "slides/io/summary.h"
+#include "slides/surfaces/patch_wall.h"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
@@ -91,6 +92,7 @@ int run(const Options& options) {
     applyOverrides(options, scene);
     const auto carrier = slides::makeCarrier(scene);
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
+    slides::placePatchSurfaces(scene, *carrier);
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     omp_set_num_threads(threads);
     const slides::SceneAnalysis analysis = slides::analyseScene(scene, *carrier);

@@ -129,7 +129,7 @@ TEST_P(ObliqueWallImpact, MatchesTheRigidBodyStickSlipSolution) {
     scene.time.dt = 1e-4;
     scene.time.endTime = 3e-4;
     // Wall at x = R + 1.5 dt·vn: the touch falls at the middle of the second step.
-    PlaneSurface wall;
+    Surface wall;
     wall.name = "wall";
     wall.point = Vec3(radius + 1.5 * scene.time.dt * vn, 0, 0);
     wall.normal = Vec3(-1, 0, 0);

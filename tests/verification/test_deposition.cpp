@@ -33,7 +33,7 @@ Scene depositionScene(double speed, long count) {
     scene.injection.rate = 1e3;
     scene.deposition.factor = 5000;
     scene.collisions.restitution = {RestitutionModel::velocityDependent, 0, 3};
-    PlaneSurface target;
+    Surface target;
     target.name = "target";
     target.point = Vec3(2e-3, 0, 0);
     target.normal = Vec3(-1, 0, 0);

@@ -138,7 +138,7 @@ TEST(SoftSphereStepper, SphereDroppedOnASoftFloorReboundsToE2TimesItsHeight) {
     const double e = 0.8, drop = 0.02; // impact at √(2 g h) = 0.63 m/s
     Scene scene = demScene(1, e, 2e-6);
     scene.physics.gravity = Vec3(0, 0, -9.81);
-    PlaneSurface floor;
+    Surface floor;
     floor.name = "floor";
     floor.point = Vec3::Zero();
     floor.normal = Vec3::UnitZ();

@@ -17,7 +17,7 @@ Scene pilotScene(const Scene& scene, double dt) {
     pilot.injection.mode = InjectionMode::allAtStart;
     for (const auto& row : physicsTermNames()) setTerm(pilot, row.value, false);
     pilot.physics.automaticTerms.clear();
-    for (PlaneSurface& surface : pilot.surfaces) surface.interaction = SurfaceInteraction::absorb;
+    for (Surface& surface : pilot.surfaces) surface.interaction = SurfaceInteraction::absorb;
     pilot.time.dt = dt;
     pilot.time.stopWhenAllDone = true;
     return pilot;

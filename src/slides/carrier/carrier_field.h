@@ -10,10 +10,12 @@
 
 #include "slides/core/vector.h"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +51,9 @@ struct Box {
     Vec3 min = Vec3::Zero();
     Vec3 max = Vec3::Zero();
 };
+
+/// A triangle of a boundary patch.
+using PatchTriangle = std::array<Vec3, 3>;
 
 class CarrierField {
 public:
@@ -88,6 +93,13 @@ public:
 
     /// Names of the boundary patches a point can leave through, by index (location −3 − index).
     virtual std::vector<std::string> boundaryNames() const { return {}; }
+
+    /// The faces of boundary patch `name` as triangles, each with its vertices counter-clockwise
+    /// seen from the gas (surfaces of type patch, surfaces/patch_wall.h); the scene reader has
+    /// checked that the carrier is a 3-D mesh holding that patch.
+    virtual std::vector<PatchTriangle> patchTriangles(const std::string& name) const {
+        throw std::logic_error("carrier " + describe() + " has no patch " + name);
+    }
 
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }

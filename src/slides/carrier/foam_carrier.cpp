@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -307,6 +308,25 @@ std::vector<std::string> FoamCarrier::boundaryNames() const {
     std::vector<std::string> names;
     for (const auto& patch : mesh_.patches) names.push_back(patch.name);
     return names;
+}
+
+std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) const {
+    const auto patch = std::find_if(mesh_.patches.begin(), mesh_.patches.end(),
+                                    [&](const FoamPatch& p) { return p.name == name; });
+    if (patch == mesh_.patches.end() || wedge_ || emptyNormal_)
+        throw std::logic_error("patch surface " + name + " needs a 3-D mesh holding it");
+    // Each face fanned about its point average, as the locator's tetrahedra split it, so the
+    // triangles lie on the boundary the particles are tracked against. OpenFOAM orders a
+    // boundary face's points counter-clockwise seen from outside: reversed, seen from the gas.
+    std::vector<PatchTriangle> triangles;
+    for (int face = patch->start; face < patch->start + patch->size; ++face) {
+        const auto points = mesh_.pointsOf(face);
+        const Vec3& middle = locator_->faceMidpoint(face);
+        for (std::size_t k = 0; k < points.size(); ++k)
+            triangles.push_back(
+                {middle, mesh_.points[points[(k + 1) % points.size()]], mesh_.points[points[k]]});
+    }
+    return triangles;
 }
 
 CarrierNeeds FoamCarrier::provides() const {

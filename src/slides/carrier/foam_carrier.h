@@ -65,6 +65,7 @@ public:
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
     std::optional<Box> bounds() const override;
     std::vector<std::string> boundaryNames() const override;
+    std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
     /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against
     /// cellPoint), latticeErrorPoints, latticeExactPathPoints (random points it does not serve).
     std::vector<std::pair<std::string, double>> figures() const override { return latticeFigures_; }

@@ -60,6 +60,10 @@ std::vector<int> toInt(const std::vector<std::int64_t>& values, const FoamFile& 
 
 } // namespace
 
+std::vector<FoamPatch> readFoamBoundary(const std::filesystem::path& caseDirectory) {
+    return readBoundary(caseDirectory / "constant" / "polyMesh" / "boundary");
+}
+
 FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
     const auto dir = caseDirectory / "constant" / "polyMesh";
     FoamMesh mesh;

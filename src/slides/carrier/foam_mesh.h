@@ -67,6 +67,9 @@ struct FoamMesh {
     void computeGeometry();
 };
 
+/// Reads CASE/constant/polyMesh/boundary alone; InputError naming the file on bad content.
+std::vector<FoamPatch> readFoamBoundary(const std::filesystem::path& caseDirectory);
+
 /// Reads CASE/constant/polyMesh; InputError naming the file on bad or inconsistent content.
 FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory);
 

@@ -84,7 +84,7 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     });
     for (std::uint32_t i = 0; i < cloud.size(); ++i)
         for (const std::size_t s : softWalls_) {
-            const PlaneSurface& wall = scene_.surfaces[s];
+            const Surface& wall = scene_.surfaces[s];
             if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
                 entries_.push_back({i,
                                     -1 - static_cast<std::int32_t>(s),
@@ -152,7 +152,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                 sphereSphereLoad(entry.pair, law_, sphere(entry.first),
                                  sphere(static_cast<std::size_t>(entry.second)), entry.spring, dt);
         } else {
-            const PlaneSurface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+            const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
             load = sphereWallLoad(entry.pair, law_, sphere(entry.first), wall.point, wall.normal,
                                   entry.spring, dt);
         }

@@ -127,13 +127,17 @@ struct TimeSettings {
     Integrator integrator = Integrator::exponentialMidpoint;
 };
 
-/// A plane surface: a sink, a wall or a deposition target (collide/collision_settings.h).
-struct PlaneSurface {
+/// A surface: a sink, a wall or a deposition target (collide/collision_settings.h) — a plane
+/// of the dictionary, or a wall patch of the OpenFOAM mesh (surfaces/patch_wall.h).
+struct Surface {
     std::string name;
+    /// The plane; for a patch, its mean plane (area-weighted centroid and normal), which the
+    /// deposit's metrics and map use (surfaces/patch_wall.h, placePatchSurfaces).
     Vec3 point = Vec3::Zero();
     Vec3 normal = Vec3::UnitX(); ///< unit, pointing into the gas side
     MaterialSettings material;
     SurfaceInteraction interaction = SurfaceInteraction::absorb;
+    std::string patch; ///< the mesh patch it is; empty for a plane
 };
 
 struct OutputSettings {
@@ -155,7 +159,7 @@ struct Scene {
     TimeSettings time;
     CollisionSettings collisions;
     AdhesionSettings deposition; ///< adhesion of surfaces whose interaction is deposit
-    std::vector<PlaneSurface> surfaces;
+    std::vector<Surface> surfaces;
     Box domain;                     ///< particles leaving this box have escaped
     bool domainFromCarrier = false; ///< no domain given: the carrier's bounds (a mesh) set it
     OutputSettings output;
@@ -165,7 +169,7 @@ struct Scene {
 /// surfaces that rebound or deposit) that change it.
 inline bool tracksSpin(const Scene& scene) {
     return scene.physics.spin || scene.collisions.model != CollisionModel::none ||
-           std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const PlaneSurface& s) {
+           std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const Surface& s) {
                return s.interaction != SurfaceInteraction::absorb;
            });
 }

@@ -300,10 +300,15 @@ std::vector<KeyDeclaration> declareKeys() {
         {"surfaces", K::dictionary, "-", "", {}, R::any,
          "Named surfaces that particles meet."},
         {"surfaces.*", K::dictionary, "-", "-", {}, R::any, "One surface, named by its key."},
-        {"surfaces.*.type", K::word, "-", "plane", {"plane"}, R::any, "Surface shape."},
-        {"surfaces.*.point", K::vector, "m", "", {}, R::any, "A point on the plane."},
-        {"surfaces.*.normal", K::vector, "-", "", {}, R::any,
-         "Plane normal pointing into the gas (normalised on reading)."},
+        {"surfaces.*.type", K::word, "-", "plane", {"plane", "patch"}, R::any,
+         "Surface shape: plane (point and normal), or patch, a wall patch of the foamField "
+         "carrier's 3-D mesh (spheres meet its faces, not their convex edges)."},
+        {"surfaces.*.point", K::vector, "m", "-", {}, R::any, "A point on the plane (type plane)."},
+        {"surfaces.*.normal", K::vector, "-", "-", {}, R::any,
+         "Plane normal pointing into the gas, normalised on reading (type plane)."},
+        {"surfaces.*.patch", K::word, "-", "-", {}, R::any,
+         "Name of the mesh patch, of type wall or patch in constant/polyMesh/boundary (type "
+         "patch)."},
         {"surfaces.*.interaction", K::word, "-", "absorb", namesOf(surfaceInteractionNames()),
          R::any,
          "absorb: record the arrival and remove the particle; rebound: impulse law (Eq. "

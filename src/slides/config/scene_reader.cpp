@@ -1,5 +1,6 @@
 #include "slides/config/scene_reader.h"
 
+#include "slides/carrier/foam_mesh.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
@@ -436,7 +437,7 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     };
     bool anyContact = collisions.model != CollisionModel::none;
     bool anyDeposit = false;
-    for (const PlaneSurface& surface : scene.surfaces) {
+    for (const Surface& surface : scene.surfaces) {
         const std::string base = "surfaces." + surface.name;
         if (surface.interaction == SurfaceInteraction::absorb) continue;
         anyContact = true;
@@ -474,6 +475,34 @@ void refuseGasTerms(const KeyReader& keys, Scene& scene) {
     for (AutomaticTerm& automatic : scene.physics.automaticTerms)
         if (automatic.term != PhysicsTerm::collisions && automatic.unavailable.empty())
             automatic.unavailable = "needs a carrier gas";
+}
+
+/// The mesh patch a surface of type patch is: one of type wall or patch in the foamField
+/// carrier's constant/polyMesh/boundary, of a 3-D mesh.
+std::string readPatchName(const KeyReader& keys, const std::string& base, const Scene& scene) {
+    if (scene.carrier.type != CarrierType::foamField)
+        keys.fail(base + ".type", "a patch surface needs carrier type foamField (a mesh)");
+    keys.require(base + ".patch", "for a surface of type patch");
+    if (keys.has(base + ".point") || keys.has(base + ".normal"))
+        keys.fail(base + ".type", "a patch surface takes its shape from the mesh: no point or "
+                                  "normal");
+    const std::string name = keys.word(base + ".patch");
+    const std::vector<FoamPatch> patches = readFoamBoundary(scene.caseDirectory);
+    std::string names;
+    for (const FoamPatch& patch : patches) {
+        if (patch.type == PatchType::wedge || patch.type == PatchType::empty)
+            keys.fail(base + ".type", "patch surfaces need a 3-D mesh; patch " + patch.name +
+                                          " is a wedge or empty patch");
+        names += " " + patch.name;
+    }
+    const auto found = std::find_if(patches.begin(), patches.end(),
+                                    [&](const FoamPatch& patch) { return patch.name == name; });
+    if (found == patches.end())
+        keys.fail(base + ".patch",
+                  "no patch '" + name + "' in constant/polyMesh/boundary; patches:" + names);
+    if (found->type == PatchType::symmetry)
+        keys.fail(base + ".patch", "patch '" + name + "' is a symmetry plane, not a wall");
+    return name;
 }
 
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
@@ -622,17 +651,27 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     const Dictionary& surfaces = dictionary.subDict("surfaces");
     for (const auto& name : surfaces.keys()) {
         const std::string base = "surfaces." + name;
-        PlaneSurface plane;
-        plane.name = name;
-        keys.word(base + ".type");
-        plane.point = keys.vector(base + ".point");
-        plane.normal = keys.direction(base + ".normal");
-        plane.material = readMaterial(keys, base + ".material");
-        plane.interaction =
+        Surface surface;
+        surface.name = name;
+        if (keys.word(base + ".type") == "patch") {
+            surface.patch = readPatchName(keys, base, scene);
+        } else {
+            keys.require(base + ".point", "for a plane");
+            keys.require(base + ".normal", "for a plane");
+            surface.point = keys.vector(base + ".point");
+            surface.normal = keys.direction(base + ".normal");
+        }
+        surface.material = readMaterial(keys, base + ".material");
+        surface.interaction =
             *valueNamed(surfaceInteractionNames(), keys.word(base + ".interaction"));
-        scene.surfaces.push_back(plane);
+        scene.surfaces.push_back(surface);
     }
     readCollisionsAndDeposition(keys, scene);
+    for (const Surface& surface : scene.surfaces)
+        if (!surface.patch.empty() && meetsBySoftContact(scene.collisions, surface.interaction))
+            keys.fail("surfaces." + surface.name + ".interaction",
+                      "a patch cannot be a soft wall of collisions.model softSphere (soft walls "
+                      "are planes); use a plane, or interaction deposit or absorb");
     if (scene.carrier.type == CarrierType::none) refuseGasTerms(keys, scene);
 
     scene.domainFromCarrier = !keys.has("domain");

@@ -21,7 +21,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
       injector_(scene), needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
                                .temperature =
                                    scene.physics.heatTransfer != HeatTransferModel::none},
-      dispersion_(scene), heating_(scene), surfaces_(scene) {
+      dispersion_(scene), heating_(scene), surfaces_(scene, carrier) {
     if (!(scene.time.dt > 0))
         throw std::logic_error("time.dt is not set: the scene analysis chooses it "
                                "(analysis/scene_analysis.h)");

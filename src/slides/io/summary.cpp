@@ -41,7 +41,7 @@ nlohmann::json statistics(const std::vector<double>& values) {
 }
 
 nlohmann::json arrivalsAt(const Scene& scene, const Stepper& stepper, int surface) {
-    const PlaneSurface& plane = scene.surfaces[static_cast<std::size_t>(surface)];
+    const Surface& plane = scene.surfaces[static_cast<std::size_t>(surface)];
     std::vector<double> impactSpeed, normalSpeed, distanceFromAxis, time, temperature;
     for (const auto& arrival : stepper.arrivals()) {
         if (arrival.surface != surface) continue;
@@ -198,7 +198,7 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
     if (stepper.collisions() > 0 || scene.collisions.model != CollisionModel::none)
         summary["collisions"] = {{"particlePairs", stepper.collisions()}};
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        const PlaneSurface& plane = scene.surfaces[s];
+        const Surface& plane = scene.surfaces[s];
         if (plane.interaction == SurfaceInteraction::absorb) continue;
         const std::uint64_t rebounds = stepper.surfaceImpacts().rebounds()[s];
         summary["rebounds"][plane.name] = rebounds;

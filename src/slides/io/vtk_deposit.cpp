@@ -41,7 +41,7 @@ void writeDeposit(const std::filesystem::path& directory, const Scene& scene,
     std::vector<double> radii;
     bool anyDepositSurface = false;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        const PlaneSurface& plane = scene.surfaces[s];
+        const Surface& plane = scene.surfaces[s];
         if (plane.interaction != SurfaceInteraction::deposit) continue;
         anyDepositSurface = true;
         for (const Arrival& arrival : arrivals)

@@ -16,7 +16,7 @@ Vec3 inPlaneAxis(const Vec3& normal) {
 
 } // namespace
 
-DepositMap depositMap(const PlaneSurface& plane, int surface, const std::vector<Arrival>& arrivals,
+DepositMap depositMap(const Surface& plane, int surface, const std::vector<Arrival>& arrivals,
                       long maxPixels) {
     DepositMap map;
     map.normal = plane.normal;

@@ -24,7 +24,7 @@ struct DepositMap {
 };
 
 /// The map of the particles stuck on surface (its arrivals); empty without any.
-DepositMap depositMap(const PlaneSurface& plane, int surface, const std::vector<Arrival>& arrivals,
+DepositMap depositMap(const Surface& plane, int surface, const std::vector<Arrival>& arrivals,
                       long maxPixels = 4'000'000);
 
 } // namespace slides

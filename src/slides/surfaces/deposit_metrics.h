@@ -26,7 +26,7 @@ struct DepositMetrics {
 };
 
 /// Eq. 5.12 for the particles stuck on surface (the arrivals there, for a deposit surface).
-inline DepositMetrics depositMetrics(const PlaneSurface& plane, int surface,
+inline DepositMetrics depositMetrics(const Surface& plane, int surface,
                                      const std::vector<Arrival>& arrivals, long injected) {
     DepositMetrics metrics;
     double radiusSum = 0;

@@ -16,7 +16,7 @@ namespace slides {
 
 /// Fraction α ∈ [0, 1] of the step at which the sphere first touches the plane, if it does;
 /// a sphere already touching or behind it at the start touches at α = 0.
-inline std::optional<double> planeContactFraction(const PlaneSurface& plane, const Vec3& start,
+inline std::optional<double> planeContactFraction(const Surface& plane, const Vec3& start,
                                                   const Vec3& end, double radius) {
     const double startGap = (start - plane.point).dot(plane.normal) - radius;
     const double endGap = (end - plane.point).dot(plane.normal) - radius;

@@ -12,8 +12,13 @@
 
 namespace slides {
 
-SurfaceImpacts::SurfaceImpacts(const Scene& scene)
-    : scene_(scene), rebounds_(scene.surfaces.size(), 0) {}
+SurfaceImpacts::SurfaceImpacts(const Scene& scene, const CarrierField& carrier)
+    : scene_(scene), rebounds_(scene.surfaces.size(), 0) {
+    for (const Surface& surface : scene.surfaces)
+        walls_.push_back(surface.patch.empty()
+                             ? std::nullopt
+                             : std::optional<PatchWall>(carrier.patchTriangles(surface.patch)));
+}
 
 ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
                                   const Vec3& startVelocity, double stepLength, double stepEnd,
@@ -31,7 +36,7 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
             arrival.temperature = temperatureWithinStep(temperature->start, cloud.temperature[i],
                                                         temperature->gas, elapsed);
             // Sticking dissipates all the kinetic energy it arrived with.
-            const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(arrival.surface)];
+            const Surface& plane = scene_.surfaces[static_cast<std::size_t>(arrival.surface)];
             if (plane.interaction == SurfaceInteraction::deposit && heats()) {
                 const double mass = sphereMass(arrival.radius, scene_.particles.density);
                 const ImpactBody stuck{arrival.velocity, cloud.angularVelocity[i], 1 / mass,
@@ -69,19 +74,31 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     int surface = -1;
     double fraction = 2.0;
     Vec3 contactVelocity = Vec3::Zero();
+    Vec3 wallNormal = Vec3::UnitX(), wallPoint = Vec3::Zero(); // the touched plane
     for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
-        const PlaneSurface& plane = scene_.surfaces[s];
+        const Surface& plane = scene_.surfaces[s];
         if (meetsBySoftContact(scene_.collisions, plane.interaction)) continue;
-        const auto touch = planeContactFraction(plane, path.start, x, radius);
-        if (!touch || *touch >= fraction) continue;
         // A sink takes whatever touches it, as before collisions existed.
-        const auto meeting = plane.interaction == SurfaceInteraction::absorb
-                                 ? std::optional<Vec3>(velocityAt(*touch))
-                                 : meetingVelocity(*touch, plane.normal);
-        if (meeting) {
-            fraction = *touch;
+        const auto meeting = [&](double touch, const Vec3& normal) {
+            return plane.interaction == SurfaceInteraction::absorb
+                       ? std::optional<Vec3>(velocityAt(touch))
+                       : meetingVelocity(touch, normal);
+        };
+        std::optional<PatchTouch> touch;
+        if (walls_[s]) {
+            touch = walls_[s]->firstTouch(path.start, x, radius, [&](double at, const Vec3& n) {
+                return meeting(at, n).has_value();
+            });
+        } else if (const auto at = planeContactFraction(plane, path.start, x, radius)) {
+            touch = PatchTouch{*at, plane.normal, plane.point};
+        }
+        if (!touch || touch->fraction >= fraction) continue;
+        if (const auto velocity = meeting(touch->fraction, touch->normal)) {
+            fraction = touch->fraction;
             surface = static_cast<int>(s);
-            contactVelocity = *meeting;
+            contactVelocity = *velocity;
+            wallNormal = touch->normal;
+            wallPoint = touch->point;
         }
     }
     const auto depositTouch = deposit_.firstTouch(path.start, x, radius);
@@ -98,16 +115,16 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     }
     if (surface < 0) return ImpactResult::none;
 
-    const PlaneSurface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
+    const Surface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
     const Vec3 normal =
         onDeposit ? (centreAt(fraction) - deposit_.position(depositTouch->particle)).normalized()
-                  : plane.normal;
+                  : wallNormal;
     // At the touch the spheres just meet; a path that started overlapping is set back to that.
     const Vec3 centre =
         onDeposit ? Vec3(deposit_.position(depositTouch->particle) +
                          (radius + deposit_.radius(depositTouch->particle)) * normal)
                   : Vec3(centreAt(fraction) -
-                         ((centreAt(fraction) - plane.point).dot(normal) - radius) * normal);
+                         ((centreAt(fraction) - wallPoint).dot(normal) - radius) * normal);
     const double temperature = cloud.temperature.empty() ? 0.0 : cloud.temperature[i];
     const auto arrive = [&] {
         arrival = {cloud.id[i], surface,         stepEnd - (1 - fraction) * path.length,

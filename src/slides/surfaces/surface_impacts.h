@@ -2,8 +2,9 @@
 // absorbed, stuck (Eq. 5.9) or rebounded by the impulse law (Eq. 2.15–2.33).
 //
 // The first touch along the step's chord x₀ → x₁ is sought among the planes
-// (surfaces/plane_contact.h) and the deposited particles (surfaces/deposit.h). At the touch,
-// the particle's velocity is that of the chord's fraction s, v_c = v₀ + s (v₁ − v₀):
+// (surfaces/plane_contact.h), the mesh's wall patches (surfaces/patch_wall.h) and the deposited
+// particles (surfaces/deposit.h); n̂ is the plane's, the patch face's or the line of centres. At the
+// touch, the particle's velocity is that of the chord's fraction s, v_c = v₀ + s (v₁ − v₀):
 //   absorb  — the arrival is recorded there and the particle leaves;
 //   deposit — if v_n = −v_c·n̂ is below Eq. 5.9's limit for the pair (particle–surface, or
 //             particle–deposited particle), it sticks: recorded as an arrival, added to the
@@ -28,6 +29,7 @@
 #include "slides/core/particle_cloud.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit.h"
+#include "slides/surfaces/patch_wall.h"
 
 #include <cstdint>
 #include <optional>
@@ -47,7 +49,8 @@ struct StepTemperature {
 
 class SurfaceImpacts {
 public:
-    explicit SurfaceImpacts(const Scene& scene);
+    /// The carrier gives the triangles of the surfaces of type patch.
+    SurfaceImpacts(const Scene& scene, const CarrierField& carrier);
 
     /// Meets particle i, which flew from start (velocity startVelocity) to its current state
     /// over stepLength, ending at time stepEnd (with heat transfer, its temperature over the
@@ -95,6 +98,7 @@ private:
     static constexpr int maxContactsPerStep = 4;
 
     const Scene& scene_;
+    std::vector<std::optional<PatchWall>> walls_; ///< per surface: its patch, if it is one
     Deposit deposit_;
     std::vector<std::uint64_t> rebounds_;
 };

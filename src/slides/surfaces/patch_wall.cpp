@@ -1,0 +1,76 @@
+#include "slides/surfaces/patch_wall.h"
+
+#include "slides/core/error.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace slides {
+
+PatchWall::PatchWall(const std::vector<PatchTriangle>& triangles) {
+    if (triangles.empty()) throw std::logic_error("a patch surface without faces");
+    Vec3 weightedNormal = Vec3::Zero(), weightedCentroid = Vec3::Zero();
+    double area = 0;
+    lower_ = upper_ = triangles.front()[0];
+    for (const PatchTriangle& triangle : triangles) {
+        const Vec3 b = triangle[1] - triangle[0], c = triangle[2] - triangle[0];
+        const Vec3 areaVector = 0.5 * b.cross(c);
+        if (!(areaVector.norm() > 0)) continue; // a degenerate fan triangle meets nothing
+        const Vec3 middle = (triangle[0] + triangle[1] + triangle[2]) / 3;
+        vertex_.push_back(triangle[0]);
+        edgeB_.push_back(b);
+        edgeC_.push_back(c);
+        normal_.push_back(areaVector.normalized());
+        triangleCentroid_.push_back(middle);
+        for (const Vec3& point : triangle) {
+            centroidReach_ = std::max(centroidReach_, (point - middle).norm());
+            lower_ = lower_.cwiseMin(point);
+            upper_ = upper_.cwiseMax(point);
+        }
+        weightedNormal += areaVector;
+        weightedCentroid += areaVector.norm() * middle;
+        area += areaVector.norm();
+    }
+    if (normal_.empty()) throw std::logic_error("a patch surface of zero area");
+    centroid_ = weightedCentroid / area;
+    meanNormal_ = weightedNormal.norm() > 1e-6 * area ? weightedNormal.normalized() : Vec3::Zero();
+    grid_.build(triangleCentroid_, std::max(centroidReach_, 1e-9));
+}
+
+std::optional<double> PatchWall::touchFraction(std::size_t k, const Vec3& start, const Vec3& end,
+                                               double radius) const {
+    const Vec3& n = normal_[k];
+    const double startHeight = (start - vertex_[k]).dot(n);
+    const double startGap = startHeight - radius, endGap = (end - vertex_[k]).dot(n) - radius;
+    if (endGap > 0 || startHeight < 0) return std::nullopt;
+    const double fraction = startGap <= 0 ? 0.0 : startGap / (startGap - endGap);
+    // Over the triangle: the barycentric weights of the centre's projection, all ≥ 0.
+    const Vec3 offset = start + fraction * (end - start) - vertex_[k];
+    const Vec3 &b = edgeB_[k], &c = edgeC_[k];
+    const double bb = b.dot(b), bc = b.dot(c), cc = c.dot(c);
+    const double ob = offset.dot(b), oc = offset.dot(c);
+    const double determinant = bb * cc - bc * bc;
+    const double wb = (cc * ob - bc * oc) / determinant, wc = (bb * oc - bc * ob) / determinant;
+    constexpr double edgeTolerance = 1e-9; // a touch on an edge shared by two faces is kept
+    if (wb < -edgeTolerance || wc < -edgeTolerance || wb + wc > 1 + edgeTolerance)
+        return std::nullopt;
+    return fraction;
+}
+
+void placePatchSurfaces(Scene& scene, const CarrierField& carrier) {
+    for (Surface& surface : scene.surfaces) {
+        if (surface.patch.empty()) continue;
+        const PatchWall wall(carrier.patchTriangles(surface.patch));
+        const bool deposits = surface.interaction == SurfaceInteraction::deposit;
+        if (deposits && !(wall.meanNormal().norm() > 0))
+            throw InputError(scene.dictionaryFile.string(), 0,
+                             "surfaces." + surface.name + ".patch",
+                             "patch '" + surface.patch +
+                                 "' has no mean direction (its face normals cancel): the "
+                                 "deposit's height and map need one; split the patch");
+        surface.point = wall.centroid();
+        if (wall.meanNormal().norm() > 0) surface.normal = wall.meanNormal();
+    }
+}
+
+} // namespace slides

@@ -1,0 +1,78 @@
+// PatchWall: a wall patch of the OpenFOAM mesh as a surface that spheres meet (type patch).
+//
+// The patch's faces, fanned into triangles about their point averages (as the mesh's
+// tetrahedra split them), are binned by centroid in a cell grid (collide/cell_grid.h). A sphere
+// of radius R moving on the chord x₀ → x₁ touches triangle k (unit normal n into the gas, a
+// vertex a) where its centre's gap d = (x − a)·n − R falls to 0, at α = d₀/(d₀ − d₁) as on a
+// plane (surfaces/plane_contact.h), provided the centre then lies over the triangle (its
+// projection inside it). A concave corner is met on either face; the sphere's contact with a
+// convex edge or vertex itself is not sought, so there a sphere may pass within R of the edge.
+// A centre already behind a face's plane does not meet that face.
+//
+//     surfaces { plate { type patch; patch plate; interaction deposit; material { ... } } }
+#pragma once
+
+#include "slides/carrier/carrier_field.h"
+#include "slides/collide/cell_grid.h"
+#include "slides/config/scene.h"
+
+#include <optional>
+#include <vector>
+
+namespace slides {
+
+/// Where a sphere meets a patch: the fraction of the chord, the face's plane there.
+struct PatchTouch {
+    double fraction = 0;
+    Vec3 normal = Vec3::UnitX(); ///< unit, into the gas
+    Vec3 point = Vec3::Zero();   ///< a point of the face's plane
+};
+
+class PatchWall {
+public:
+    explicit PatchWall(const std::vector<PatchTriangle>& triangles);
+
+    /// The first touch along start → end of a sphere of the given radius that accept(fraction,
+    /// normal) takes (the caller's test that the sphere approaches the face there).
+    template <typename Accept>
+    std::optional<PatchTouch> firstTouch(const Vec3& start, const Vec3& end, double radius,
+                                         Accept accept) const {
+        const Vec3 centre = 0.5 * (start + end);
+        const double reach = 0.5 * (end - start).norm() + radius + centroidReach_;
+        if (((centre.array() + reach) < lower_.array()).any() ||
+            ((centre.array() - reach) > upper_.array()).any())
+            return std::nullopt;
+        std::optional<PatchTouch> first;
+        grid_.forEachPointWithin(centre, reach, [&](std::uint32_t k) {
+            const auto fraction = touchFraction(k, start, end, radius);
+            if (fraction && (!first || *fraction < first->fraction) &&
+                accept(*fraction, normal_[k]))
+                first = PatchTouch{*fraction, normal_[k], vertex_[k]};
+        });
+        return first;
+    }
+
+    /// The area-weighted centroid and mean unit normal (into the gas) of the patch.
+    const Vec3& centroid() const { return centroid_; }
+    const Vec3& meanNormal() const { return meanNormal_; }
+    std::size_t size() const { return normal_.size(); }
+
+private:
+    std::optional<double> touchFraction(std::size_t k, const Vec3& start, const Vec3& end,
+                                        double radius) const;
+
+    std::vector<Vec3> vertex_, edgeB_, edgeC_; ///< a, b − a, c − a of each triangle
+    std::vector<Vec3> normal_;                 ///< unit, into the gas
+    std::vector<Vec3> triangleCentroid_;
+    double centroidReach_ = 0; ///< the largest distance of a triangle's point from its centroid
+    Vec3 lower_ = Vec3::Zero(), upper_ = Vec3::Zero(); ///< the patch's box
+    Vec3 centroid_ = Vec3::Zero(), meanNormal_ = Vec3::UnitX();
+    CellGrid grid_;
+};
+
+/// Sets each patch surface's point and normal to its patch's mean plane (for the deposit's
+/// metrics and map). InputError at surfaces.NAME.patch for a patch without a mean direction
+/// (a closed one, whose face normals cancel).
+void placePatchSurfaces(Scene& scene, const CarrierField& carrier);
+
+} // namespace slides
