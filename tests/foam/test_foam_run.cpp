@@ -1,35 +1,23 @@
 // ctest-labels: foam run
 // `slides-track CASE` on an OpenFOAM case: the 5° wedge mesh OpenFOAM wrote
 // (tests/foam/data/wedge) with a uniform stream U = (4 0 0) m/s, tracked in 3-D.
+#include "../support/case_runs.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <sstream>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
 
 const std::filesystem::path data = std::filesystem::path(SLIDES_SOURCE_DIR) / "tests/foam/data";
 
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-int runCli(const std::string& arguments, const std::filesystem::path& log) {
-    const std::string command =
-        std::string(SLIDES_TRACK_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using slides::test::runCli;
+using slides::test::slurp;
 
 class FoamRun : public ::testing::Test {
 protected:

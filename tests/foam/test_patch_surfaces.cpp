@@ -5,35 +5,23 @@
 // start 60 mm above the floor and fall with the gas onto it: met as the patch, every arrival,
 // rebound and deposit must be the plane y = 0's (the patch's fan triangles lie in that plane),
 // to round-off. Bad patch input is one error naming the key, exit status 2.
+#include "../support/case_runs.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
 
 const std::filesystem::path data = std::filesystem::path(SLIDES_SOURCE_DIR) / "tests/foam/data";
 
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-int runCli(const std::string& arguments, const std::filesystem::path& log) {
-    const std::string command =
-        std::string(SLIDES_TRACK_EXE) + " " + arguments + " > " + log.string() + " 2>&1";
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using slides::test::runCli;
+using slides::test::slurp;
 
 const char* const materials =
     "material { bulkModulus 167e9; shearModulus 77e9; yieldStress 200e6; surfaceEnergy 0.046; }";

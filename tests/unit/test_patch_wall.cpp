@@ -16,15 +16,18 @@ namespace {
 
 const auto always = [](double, const Vec3&) { return true; };
 
-/// The square [0, 1]² of the plane z = 0, as a mesh face fanned about its centre (four
-/// triangles, counter-clockwise seen from +z, the gas side).
-std::vector<PatchTriangle> floorSquare(double side = 1) {
-    const Vec3 middle(side / 2, side / 2, 0);
-    const std::array<Vec3, 4> corners{Vec3(0, 0, 0), Vec3(side, 0, 0), Vec3(side, side, 0),
-                                      Vec3(0, side, 0)};
-    std::vector<PatchTriangle> triangles;
+/// A quadrilateral mesh face fanned about its centre into four triangles, appended to
+/// triangles; corners counter-clockwise seen from the gas.
+void addFace(std::vector<PatchTriangle>& triangles, const std::array<Vec3, 4>& corners) {
+    const Vec3 middle = (corners[0] + corners[1] + corners[2] + corners[3]) / 4;
     for (std::size_t k = 0; k < 4; ++k)
         triangles.push_back({middle, corners[k], corners[(k + 1) % 4]});
+}
+
+/// The square [0, 1]² of the plane z = 0, the gas above.
+std::vector<PatchTriangle> floorSquare() {
+    std::vector<PatchTriangle> triangles;
+    addFace(triangles, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
     return triangles;
 }
 
@@ -74,10 +77,7 @@ TEST(PatchWall, FacesAreNotMetFromBehindNorWhenTheCallerRefuses) {
 TEST(PatchWall, InAConcaveCornerTheFirstFaceMetWins) {
     // Floor z = 0 (x, y in [0, 1]) and a wall x = 1 facing −x (y in [0, 1], z in [0, 1]).
     std::vector<PatchTriangle> triangles = floorSquare();
-    const Vec3 middle(1, 0.5, 0.5);
-    const std::array<Vec3, 4> corners{Vec3(1, 0, 0), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(1, 1, 0)};
-    for (std::size_t k = 0; k < 4; ++k)
-        triangles.push_back({middle, corners[k], corners[(k + 1) % 4]});
+    addFace(triangles, {Vec3(1, 0, 0), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(1, 1, 0)});
     const PatchWall wall(triangles);
     const double radius = 0.1;
     // From (0.5, 0.5, 0.5) towards (1.3, 0.5, 0.1): the wall gap 0.4 − 0.8 s and the floor gap
@@ -97,10 +97,7 @@ TEST(PatchWall, MeanPlaneIsAreaWeighted) {
     // The floor square (area 1, normal +z) and a wall of 2 × 1 facing −x at x = 1, z in [0, 2]:
     // mean normal ∝ (−2, 0, 1), centroid = (1·(0.5, 0.5, 0) + 2·(1, 0.5, 1))/3.
     std::vector<PatchTriangle> triangles = floorSquare();
-    const Vec3 middle(1, 0.5, 1);
-    const std::array<Vec3, 4> corners{Vec3(1, 0, 0), Vec3(1, 0, 2), Vec3(1, 1, 2), Vec3(1, 1, 0)};
-    for (std::size_t k = 0; k < 4; ++k)
-        triangles.push_back({middle, corners[k], corners[(k + 1) % 4]});
+    addFace(triangles, {Vec3(1, 0, 0), Vec3(1, 0, 2), Vec3(1, 1, 2), Vec3(1, 1, 0)});
     const PatchWall wall(triangles);
     EXPECT_NEAR((wall.meanNormal() - Vec3(-2, 0, 1).normalized()).norm(), 0, 1e-15);
     EXPECT_NEAR((wall.centroid() - Vec3(2.5, 1.5, 2) / 3).norm(), 0, 1e-15);
