@@ -2,7 +2,8 @@
 // Wall patches as surfaces (surfaces/patch_wall.h): a sphere swept along a chord meets a face
 // of the patch where its centre's gap to the face's plane falls to R while the centre lies over
 // the face, exactly as on a plane (surfaces/plane_contact.h, d₀/(d₀ − d₁)); the first face met
-// wins; faces seen from behind are not met; the mean plane is the area-weighted one.
+// wins, also among faces of different sizes; faces seen from behind are not met; the mean plane
+// is the area-weighted one.
 #include "slides/surfaces/patch_wall.h"
 #include "slides/surfaces/plane_contact.h"
 
@@ -24,15 +25,29 @@ void addFace(std::vector<PatchTriangle>& triangles, const std::array<Vec3, 4>& c
         triangles.push_back({middle, corners[k], corners[(k + 1) % 4]});
 }
 
-/// The square [0, 1]² of the plane z = 0, the gas above.
-std::vector<PatchTriangle> floorSquare() {
+/// The square [0, 1]² of the plane z = 0, the gas above: one face, or graded as a mesh is
+/// (two faces of ½ on the left, 4 × 8 of ⅛ on the right: triangles of three size classes).
+std::vector<PatchTriangle> floorSquare(bool graded = false) {
     std::vector<PatchTriangle> triangles;
-    addFace(triangles, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)});
+    const auto square = [&](double x, double y, double side) {
+        addFace(triangles, {Vec3(x, y, 0), Vec3(x + side, y, 0), Vec3(x + side, y + side, 0),
+                            Vec3(x, y + side, 0)});
+    };
+    if (!graded) {
+        square(0, 0, 1);
+        return triangles;
+    }
+    square(0, 0, 0.5);
+    square(0, 0.5, 0.5);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 8; ++j) square(0.5 + i / 8.0, j / 8.0, 1 / 8.0);
     return triangles;
 }
 
-TEST(PatchWall, FlatPatchIsMetAsItsPlane) {
-    const PatchWall wall(floorSquare());
+class FlatPatch : public ::testing::TestWithParam<bool> {};
+
+TEST_P(FlatPatch, IsMetAsItsPlane) {
+    const PatchWall wall(floorSquare(GetParam()));
     const Surface plane{"floor", Vec3::Zero(), Vec3::UnitZ(), {}, SurfaceInteraction::absorb, ""};
     std::mt19937_64 random(5);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -58,6 +73,9 @@ TEST(PatchWall, FlatPatchIsMetAsItsPlane) {
     }
     EXPECT_GT(met, 300); // enough of the chords reach the square
 }
+
+INSTANTIATE_TEST_SUITE_P(Faces, FlatPatch, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "graded" : "oneFace"; });
 
 TEST(PatchWall, FacesAreNotMetFromBehindNorWhenTheCallerRefuses) {
     const PatchWall wall(floorSquare());

@@ -3,6 +3,8 @@
 #include "slides/core/error.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <stdexcept>
 
 namespace slides {
@@ -11,7 +13,8 @@ PatchWall::PatchWall(const std::vector<PatchTriangle>& triangles) {
     if (triangles.empty()) throw std::logic_error("a patch surface without faces");
     Vec3 weightedNormal = Vec3::Zero(), weightedCentroid = Vec3::Zero();
     double area = 0;
-    lower_ = upper_ = triangles.front()[0];
+    std::vector<Vec3> middles;
+    std::vector<double> reaches;
     for (const PatchTriangle& triangle : triangles) {
         const Vec3 b = triangle[1] - triangle[0], c = triangle[2] - triangle[0];
         const Vec3 areaVector = 0.5 * b.cross(c);
@@ -21,12 +24,10 @@ PatchWall::PatchWall(const std::vector<PatchTriangle>& triangles) {
         edgeB_.push_back(b);
         edgeC_.push_back(c);
         normal_.push_back(areaVector.normalized());
-        triangleCentroid_.push_back(middle);
-        for (const Vec3& point : triangle) {
-            centroidReach_ = std::max(centroidReach_, (point - middle).norm());
-            lower_ = lower_.cwiseMin(point);
-            upper_ = upper_.cwiseMax(point);
-        }
+        middles.push_back(middle);
+        double reach = 0;
+        for (const Vec3& point : triangle) reach = std::max(reach, (point - middle).norm());
+        reaches.push_back(reach);
         weightedNormal += areaVector;
         weightedCentroid += areaVector.norm() * middle;
         area += areaVector.norm();
@@ -34,7 +35,30 @@ PatchWall::PatchWall(const std::vector<PatchTriangle>& triangles) {
     if (normal_.empty()) throw std::logic_error("a patch surface of zero area");
     centroid_ = weightedCentroid / area;
     meanNormal_ = weightedNormal.norm() > 1e-6 * area ? weightedNormal.normalized() : Vec3::Zero();
-    grid_.build(triangleCentroid_, std::max(centroidReach_, 1e-9));
+
+    // Class c holds the reaches in (r_min 2^(c−1), r_min 2^c]; each class's grid has cells of
+    // twice its reach, so a sphere's query spans a few cells.
+    const double smallest = *std::min_element(reaches.begin(), reaches.end());
+    for (std::uint32_t k = 0; k < reaches.size(); ++k) {
+        const auto c =
+            static_cast<std::size_t>(std::max(0.0, std::ceil(std::log2(reaches[k] / smallest))));
+        if (classes_.size() <= c) classes_.resize(c + 1);
+        SizeClass& size = classes_[c];
+        if (size.triangles.empty()) size.lower = size.upper = vertex_[k];
+        size.triangles.push_back(k);
+        size.reach = std::max(size.reach, reaches[k]);
+        for (const Vec3& point :
+             std::array<Vec3, 3>{vertex_[k], vertex_[k] + edgeB_[k], vertex_[k] + edgeC_[k]}) {
+            size.lower = size.lower.cwiseMin(point);
+            size.upper = size.upper.cwiseMax(point);
+        }
+    }
+    std::erase_if(classes_, [](const SizeClass& size) { return size.triangles.empty(); });
+    for (SizeClass& size : classes_) {
+        std::vector<Vec3> points;
+        for (const std::uint32_t k : size.triangles) points.push_back(middles[k]);
+        size.grid.build(points, 2 * size.reach);
+    }
 }
 
 std::optional<double> PatchWall::touchFraction(std::size_t k, const Vec3& start, const Vec3& end,

@@ -1,7 +1,10 @@
 // PatchWall: a wall patch of the OpenFOAM mesh as a surface that spheres meet (type patch).
 //
 // The patch's faces, fanned into triangles about their point averages (as the mesh's
-// tetrahedra split them), are binned by centroid in a cell grid (collide/cell_grid.h). A sphere
+// tetrahedra split them), are sorted into size classes (the distance from centroid to farthest
+// vertex within a factor 2) and binned by centroid in one cell grid a class
+// (collide/cell_grid.h), so that a graded mesh's fine faces are not searched with the reach of
+// its coarse ones. A sphere
 // of radius R moving on the chord x₀ → x₁ touches triangle k (unit normal n into the gas, a
 // vertex a) where its centre's gap d = (x − a)·n − R falls to 0, at α = d₀/(d₀ − d₁) as on a
 // plane (surfaces/plane_contact.h), provided the centre then lies over the triangle (its
@@ -38,17 +41,20 @@ public:
     std::optional<PatchTouch> firstTouch(const Vec3& start, const Vec3& end, double radius,
                                          Accept accept) const {
         const Vec3 centre = 0.5 * (start + end);
-        const double reach = 0.5 * (end - start).norm() + radius + centroidReach_;
-        if (((centre.array() + reach) < lower_.array()).any() ||
-            ((centre.array() - reach) > upper_.array()).any())
-            return std::nullopt;
         std::optional<PatchTouch> first;
-        grid_.forEachPointWithin(centre, reach, [&](std::uint32_t k) {
-            const auto fraction = touchFraction(k, start, end, radius);
-            if (fraction && (!first || *fraction < first->fraction) &&
-                accept(*fraction, normal_[k]))
-                first = PatchTouch{*fraction, normal_[k], vertex_[k]};
-        });
+        for (const SizeClass& size : classes_) {
+            const double reach = 0.5 * (end - start).norm() + radius + size.reach;
+            if (((centre.array() + reach) < size.lower.array()).any() ||
+                ((centre.array() - reach) > size.upper.array()).any())
+                continue;
+            size.grid.forEachPointWithin(centre, reach, [&](std::uint32_t j) {
+                const std::uint32_t k = size.triangles[j];
+                const auto fraction = touchFraction(k, start, end, radius);
+                if (fraction && (!first || *fraction < first->fraction) &&
+                    accept(*fraction, normal_[k]))
+                    first = PatchTouch{*fraction, normal_[k], vertex_[k]};
+            });
+        }
         return first;
     }
 
@@ -61,13 +67,18 @@ private:
     std::optional<double> touchFraction(std::size_t k, const Vec3& start, const Vec3& end,
                                         double radius) const;
 
+    /// Triangles whose centroid-to-vertex distances lie within a factor 2, binned by centroid.
+    struct SizeClass {
+        double reach = 0;                     ///< the largest centroid-to-vertex distance
+        std::vector<std::uint32_t> triangles; ///< indices, in the order of the grid's points
+        Vec3 lower, upper;                    ///< the box of their vertices
+        CellGrid grid;
+    };
+
     std::vector<Vec3> vertex_, edgeB_, edgeC_; ///< a, b − a, c − a of each triangle
     std::vector<Vec3> normal_;                 ///< unit, into the gas
-    std::vector<Vec3> triangleCentroid_;
-    double centroidReach_ = 0; ///< the largest distance of a triangle's point from its centroid
-    Vec3 lower_ = Vec3::Zero(), upper_ = Vec3::Zero(); ///< the patch's box
     Vec3 centroid_ = Vec3::Zero(), meanNormal_ = Vec3::UnitX();
-    CellGrid grid_;
+    std::vector<SizeClass> classes_;
 };
 
 /// Sets each patch surface's point and normal to its patch's mean plane (for the deposit's

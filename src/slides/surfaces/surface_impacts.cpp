@@ -52,6 +52,17 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
     return result;
 }
 
+std::optional<PatchTouch> SurfaceImpacts::overlapWith(std::size_t s, const Vec3& centre,
+                                                      double radius) const {
+    if (walls_[s])
+        return walls_[s]->firstTouch(centre, centre, radius,
+                                     [](double, const Vec3&) { return true; });
+    const Surface& plane = scene_.surfaces[s];
+    const double height = (centre - plane.point).dot(plane.normal);
+    if (height >= radius) return std::nullopt;
+    return PatchTouch{0, plane.normal, plane.point};
+}
+
 ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path& path,
                                        double stepEnd, Arrival& arrival) {
     Vec3& x = cloud.position[i];
@@ -63,11 +74,14 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     const auto centreAt = [&](double s) -> Vec3 { return path.start + s * (x - path.start); };
     // The velocity that meets a surface whose outward direction is `away` at fraction s: the
     // chord's, or, for a path that a collision bent within the step (or that starts in
-    // contact), the end velocity; none when both leave it.
+    // contact), the end velocity. A path that starts in contact and leaves is not met (none);
+    // one that reaches the surface within the step always is: when a collision within the step
+    // turned both velocities away, with the mean velocity of the chord, which approaches.
     const auto meetingVelocity = [&](double s, const Vec3& away) -> std::optional<Vec3> {
         const Vec3 along = velocityAt(s);
         if (s > 0 && along.dot(away) < 0) return along;
         if (v.dot(away) < 0) return Vec3(v);
+        if (s > 0) return Vec3((x - path.start) / path.length);
         return std::nullopt;
     };
     // Only a touch while approaching counts: one that starts on a surface and leaves does not.
@@ -120,11 +134,18 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
         onDeposit ? (centreAt(fraction) - deposit_.position(depositTouch->particle)).normalized()
                   : wallNormal;
     // At the touch the spheres just meet; a path that started overlapping is set back to that.
-    const Vec3 centre =
-        onDeposit ? Vec3(deposit_.position(depositTouch->particle) +
-                         (radius + deposit_.radius(depositTouch->particle)) * normal)
-                  : Vec3(centreAt(fraction) -
-                         ((centreAt(fraction) - wallPoint).dot(normal) - radius) * normal);
+    Vec3 centre = onDeposit
+                      ? Vec3(deposit_.position(depositTouch->particle) +
+                             (radius + deposit_.radius(depositTouch->particle)) * normal)
+                      : Vec3(centreAt(fraction) -
+                             ((centreAt(fraction) - wallPoint).dot(normal) - radius) * normal);
+    // Set back along a line of centres that points into the deposit's plane (a sphere that
+    // started against a deposited one and the plane at once), it would sink into the plane:
+    // it rests on the plane instead.
+    if (onDeposit) {
+        if (const auto below = overlapWith(static_cast<std::size_t>(surface), centre, radius))
+            centre += (radius - (centre - below->point).dot(below->normal)) * below->normal;
+    }
     const double temperature = cloud.temperature.empty() ? 0.0 : cloud.temperature[i];
     const auto arrive = [&] {
         arrival = {cloud.id[i], surface,         stepEnd - (1 - fraction) * path.length,

@@ -89,6 +89,9 @@ private:
     ImpactResult meetFirst(ParticleCloud& cloud, std::size_t i, Path& path, double stepEnd,
                            Arrival& arrival);
 
+    /// Where a sphere at centre overlaps surface s (closer than its radius, in front of it).
+    std::optional<PatchTouch> overlapWith(std::size_t s, const Vec3& centre, double radius) const;
+
     /// Whether impulse contacts heat the particles (Eq. 2.117): collisions.heating, with the
     /// temperatures that heat transfer tracks.
     bool heats() const {
