@@ -4,10 +4,11 @@
 // tetrahedra split them), are sorted into size classes (the distance from centroid to farthest
 // vertex within a factor 2) and binned by centroid in one cell grid a class
 // (collide/cell_grid.h), so that a graded mesh's fine faces are not searched with the reach of
-// its coarse ones. A sphere
-// of radius R moving on the chord x₀ → x₁ touches triangle k (unit normal n into the gas, a
-// vertex a) where its centre's gap d = (x − a)·n − R falls to 0, at α = d₀/(d₀ − d₁) as on a
-// plane (surfaces/plane_contact.h), provided the centre then lies over the triangle (its
+// its coarse ones.
+//
+// A sphere of radius R moving on the chord x₀ → x₁ touches triangle k (unit normal n into the
+// gas, a vertex a) where its centre's gap d = (x − a)·n − R falls to 0, at α = d₀/(d₀ − d₁) as
+// on a plane (surfaces/plane_contact.h), provided the centre then lies over the triangle (its
 // projection inside it). A concave corner is met on either face; the sphere's contact with a
 // convex edge or vertex itself is not sought, so there a sphere may pass within R of the edge.
 // A centre already behind a face's plane does not meet that face.
