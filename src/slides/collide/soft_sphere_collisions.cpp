@@ -8,6 +8,10 @@
 #include <optional>
 #include <tuple>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace slides {
 
 namespace {
@@ -27,35 +31,75 @@ SoftSphereCollisions::SoftSphereCollisions(const Scene& scene)
     law_ = scene.collisions.softSphere.damping == SoftSphereDamping::tsuji
                ? SoftContactLaw{liggghtsDampingRatio(e), friction}
                : softContactLaw(e, friction);
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+    // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
+    const ContactBody particle{1.0, 1.0, &scene.particles.material};
+    particleModuli_ = contactPair(particle, particle);
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        wallModuli_.push_back(
+            contactPair(particle, ContactBody{.material = &scene.surfaces[s].material}));
         if (meetsBySoftContact(scene.collisions, scene.surfaces[s].interaction))
             softWalls_.push_back(s);
+    }
 }
 
 void SoftSphereCollisions::halfKick(ParticleCloud& cloud,
                                     const std::vector<double>& stepLengths) const {
     const double density = scene_.particles.density;
+    const auto kick = [&](std::size_t i) {
+        // A particle without load keeps its velocity as it is (a zero kick could turn −0 to +0).
+        const Vec3& force = cloud.contactForce[i];
+        const Vec3& torque = cloud.contactTorque[i];
+        if (force.isZero(0) && torque.isZero(0)) return;
+        const double kickPerForce = 0.5 * stepLengths[i] / sphereMass(cloud.radius[i], density);
+        cloud.velocity[i] += force * kickPerForce;
+        cloud.angularVelocity[i] += torque * (kickPerForce / inertiaPerMass(cloud.radius[i]));
+    };
+    if (loadedInPlace(cloud)) {
+        const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+        for (std::ptrdiff_t k = 0; k < count; ++k) kick(loaded_[k]);
+        return;
+    }
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
-    for (std::ptrdiff_t i = 0; i < count; ++i) {
-        const double half = 0.5 * stepLengths[i];
-        const double mass = sphereMass(cloud.radius[i], density);
-        cloud.velocity[i] += cloud.contactForce[i] * (half / mass);
-        cloud.angularVelocity[i] +=
-            cloud.contactTorque[i] * (half / (mass * inertiaPerMass(cloud.radius[i])));
-    }
+    for (std::ptrdiff_t i = 0; i < count; ++i) kick(static_cast<std::size_t>(i));
+}
+
+bool SoftSphereCollisions::loadedInPlace(const ParticleCloud& cloud) const {
+    if (!loadsListed_ || cloud.contactForce.size() != cloud.size()) return false;
+    for (std::size_t k = 0; k < loaded_.size(); ++k)
+        if (loaded_[k] >= cloud.size() || cloud.id[loaded_[k]] != loadedIds_[k]) return false;
+    return true;
 }
 
 bool SoftSphereCollisions::listIsStale(const ParticleCloud& cloud) const {
-    if (builtIds_ != cloud.id) return true;
+    if (builtIds_.size() != cloud.size()) return true;
     // No pair left out of the list can touch while no particle has moved half the skin.
     const double limit = 0.25 * skin_ * skin_;
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
-    bool moved = false;
-#pragma omp parallel for schedule(static) reduction(|| : moved) if (count >= minimumParallelBatch)
+    bool stale = false;
+#pragma omp parallel for schedule(static) reduction(|| : stale) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i)
-        moved = moved || (cloud.position[i] - builtPositions_[i]).squaredNorm() > limit;
-    return moved;
+        stale = stale || builtIds_[i] != cloud.id[i] ||
+                (cloud.position[i] - builtPositions_[i]).squaredNorm() > limit;
+    return stale;
+}
+
+ContactPair SoftSphereCollisions::pairOf(const Entry& entry, const ParticleCloud& cloud) const {
+    const double density = scene_.particles.density;
+    const double radius = cloud.radius[entry.first];
+    ContactPair pair;
+    if (entry.second >= 0) {
+        const double other = cloud.radius[static_cast<std::size_t>(entry.second)];
+        pair = particleModuli_;
+        pair.radius = harmonicSum(radius, other);
+        pair.mass = harmonicSum(sphereMass(radius, density), sphereMass(other, density));
+    } else {
+        pair = wallModuli_[static_cast<std::size_t>(-1 - entry.second)];
+        pair.radius = radius; // a plane: infinite radius and mass
+        pair.mass = sphereMass(radius, density);
+    }
+    return pair;
 }
 
 void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
@@ -67,11 +111,6 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     const double largestRadius =
         cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
     skin_ = scene_.collisions.softSphere.neighbourSkin * largestRadius;
-    const double density = scene_.particles.density;
-    const MaterialSettings& material = scene_.particles.material;
-    const auto body = [&](std::uint32_t i) -> ContactBody {
-        return {sphereMass(cloud.radius[i], density), cloud.radius[i], &material};
-    };
 
     grid_.build(cloud.position, 2 * largestRadius + skin_);
     entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t a, std::uint32_t b) {
@@ -79,18 +118,13 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
         if ((cloud.position[a] - cloud.position[b]).squaredNorm() >= reach * reach)
             return std::optional<Entry>();
         if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
-        return std::optional<Entry>(
-            {a, static_cast<std::int32_t>(b), contactPair(body(a), body(b)), {}, false});
+        return std::optional<Entry>({a, static_cast<std::int32_t>(b), {}, false});
     });
     for (std::uint32_t i = 0; i < cloud.size(); ++i)
         for (const std::size_t s : softWalls_) {
             const Surface& wall = scene_.surfaces[s];
             if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
-                entries_.push_back({i,
-                                    -1 - static_cast<std::int32_t>(s),
-                                    contactPair(body(i), ContactBody{.material = &wall.material}),
-                                    {},
-                                    false});
+                entries_.push_back({i, -1 - static_cast<std::int32_t>(s), {}, false});
         }
 
     // Touching contacts keep their springs through the rebuild.
@@ -139,48 +173,83 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
     const auto sphere = [&](std::size_t i) -> ContactSphere {
         return {cloud.position[i], cloud.velocity[i], cloud.angularVelocity[i], cloud.radius[i]};
     };
+    // Most entries are apart, which a squared distance tells before any root is taken.
+    const auto apart = [&](const Entry& entry) {
+        const std::size_t a = entry.first;
+        if (entry.second >= 0) {
+            const auto b = static_cast<std::size_t>(entry.second);
+            const double reach = cloud.radius[a] + cloud.radius[b];
+            return (cloud.position[a] - cloud.position[b]).squaredNorm() >= reach * reach;
+        }
+        const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+        return (cloud.position[a] - wall.point).dot(wall.normal) >= cloud.radius[a];
+    };
     std::fill(newWallContacts_.begin(), newWallContacts_.end(), 0);
     loads_.resize(entries_.size());
     long begun = 0;
     const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
-#pragma omp parallel for schedule(static) reduction(+ : begun) if (entryCount >= minimumParallelBatch)
-    for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
-        Entry& entry = entries_[e];
-        ContactLoad& load = loads_[e];
-        if (entry.second >= 0) {
-            load =
-                sphereSphereLoad(entry.pair, law_, sphere(entry.first),
-                                 sphere(static_cast<std::size_t>(entry.second)), entry.spring, dt);
-        } else {
-            const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
-            load = sphereWallLoad(entry.pair, law_, sphere(entry.first), wall.point, wall.normal,
-                                  entry.spring, dt);
-        }
-        const bool touching = load.overlap > 0;
-        if (touching && !entry.touching) {
-            if (entry.second >= 0) {
-                ++begun;
-            } else {
-#pragma omp atomic
-                ++newWallContacts_[static_cast<std::size_t>(-1 - entry.second)];
+    std::vector<std::vector<std::uint32_t>> touchingPerThread(1);
+#pragma omp parallel reduction(+ : begun) if (entryCount >= minimumParallelBatch)
+    {
+#ifdef _OPENMP
+#pragma omp single
+        touchingPerThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        auto& touchingHere = touchingPerThread[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+        auto& touchingHere = touchingPerThread[0];
+#endif
+        // Static blocks in thread order: joined, the threads' lists ascend.
+#pragma omp for schedule(static)
+        for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
+            Entry& entry = entries_[e];
+            if (apart(entry)) {
+                if (entry.touching) entry = {entry.first, entry.second, {}, false};
+                continue;
             }
+            ContactLoad& load = loads_[e];
+            const ContactPair pair = pairOf(entry, cloud);
+            if (entry.second >= 0) {
+                load = sphereSphereLoad(pair, law_, sphere(entry.first),
+                                        sphere(static_cast<std::size_t>(entry.second)),
+                                        entry.spring, dt);
+            } else {
+                const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+                load = sphereWallLoad(pair, law_, sphere(entry.first), wall.point, wall.normal,
+                                      entry.spring, dt);
+            }
+            const bool touching = load.overlap > 0;
+            if (touching && !entry.touching) {
+                if (entry.second >= 0) {
+                    ++begun;
+                } else {
+#pragma omp atomic
+                    ++newWallContacts_[static_cast<std::size_t>(-1 - entry.second)];
+                }
+            }
+            entry.touching = touching;
+            if (touching) touchingHere.push_back(static_cast<std::uint32_t>(e));
         }
-        entry.touching = touching;
     }
     collisions_ += begun;
+    touchingEntries_.clear();
+    for (const auto& touching : touchingPerThread)
+        touchingEntries_.insert(touchingEntries_.end(), touching.begin(), touching.end());
+    collectLoaded(cloud);
 
     // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
     const bool heats = scene_.collisions.heating && !cloud.temperature.empty();
     const double density = scene_.particles.density;
-    const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
-    for (std::ptrdiff_t i = 0; i < count; ++i) {
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+        const std::size_t i = loaded_[k];
         Vec3 force = Vec3::Zero(), torque = Vec3::Zero();
         double heat = 0; // [K]
-        for (std::uint32_t k = entryStart_[i]; k < entryStart_[i + 1]; ++k) {
-            const Entry& entry = entries_[entryOf_[k] / 2];
-            const ContactLoad& load = loads_[entryOf_[k] / 2];
-            const bool second = entryOf_[k] % 2 == 1;
+        for (std::uint32_t slot = entryStart_[i]; slot < entryStart_[i + 1]; ++slot) {
+            const Entry& entry = entries_[entryOf_[slot] / 2];
+            if (!entry.touching) continue;
+            const ContactLoad& load = loads_[entryOf_[slot] / 2];
+            const bool second = entryOf_[slot] % 2 == 1;
             force += second ? Vec3(-load.force) : load.force;
             torque += second ? load.torqueOnSecond : load.torqueOnFirst;
             if (heats && load.dissipatedPower > 0) {
@@ -197,6 +266,33 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
         cloud.contactTorque[i] = torque;
         if (heats) cloud.temperature[i] += heat;
     }
+}
+
+void SoftSphereCollisions::collectLoaded(ParticleCloud& cloud) {
+    // The last call's loads are zeroed where it left them, or everywhere if the cloud changed.
+    if (loadedInPlace(cloud)) {
+        for (const std::uint32_t i : loaded_) {
+            cloud.contactForce[i] = Vec3::Zero();
+            cloud.contactTorque[i] = Vec3::Zero();
+        }
+    } else {
+        std::fill(cloud.contactForce.begin(), cloud.contactForce.end(), Vec3::Zero());
+        std::fill(cloud.contactTorque.begin(), cloud.contactTorque.end(), Vec3::Zero());
+    }
+    // The touching entries' bodies, ascending and each once.
+    isLoaded_.assign(cloud.size(), 0);
+    for (const std::uint32_t e : touchingEntries_) {
+        isLoaded_[entries_[e].first] = 1;
+        if (entries_[e].second >= 0) isLoaded_[static_cast<std::size_t>(entries_[e].second)] = 1;
+    }
+    loaded_.clear();
+    loadedIds_.clear();
+    for (std::uint32_t i = 0; i < cloud.size(); ++i)
+        if (isLoaded_[i]) {
+            loaded_.push_back(i);
+            loadedIds_.push_back(cloud.id[i]);
+        }
+    loadsListed_ = true;
 }
 
 ContactSpring SoftSphereCollisions::springOf(const Entry& entry) const {
@@ -217,7 +313,8 @@ std::vector<ContactSpring> SoftSphereCollisions::springs() const {
 void SoftSphereCollisions::resume(long collisions, std::vector<ContactSpring> springs) {
     collisions_ = collisions;
     pendingSprings_ = std::move(springs);
-    builtIds_.clear(); // the next step builds the list, handing these springs over
+    loadsListed_ = false; // the checkpoint's loads, on particles not listed
+    builtIds_.clear();    // the next step builds the list, handing these springs over
 }
 
 } // namespace slides

@@ -78,26 +78,43 @@ private:
     struct Entry {
         std::uint32_t first = 0; ///< cloud index; the lower id of a pair
         std::int32_t second = 0; ///< cloud index, or −1 − surface for a wall
-        ContactPair pair;
         TangentialSpring spring;
         bool touching = false;
     };
 
     bool listIsStale(const ParticleCloud& cloud) const;
+    /// Whether loaded_ lists every particle with a load, each still at its index.
+    bool loadedInPlace(const ParticleCloud& cloud) const;
+    /// Zeroes the loads of the particles that had one, and lists those that have one now.
+    void collectLoaded(ParticleCloud& cloud);
     void buildList(const ParticleCloud& cloud);
     /// Orders each particle's entries by partner id, for a sum that does not depend on the
     /// order in which the list was found.
     void indexEntriesByParticle();
     /// The entry's bodies by id (those of the list's build) and its spring.
     ContactSpring springOf(const Entry& entry) const;
+    /// The entry's effective pair: the moduli of its kind with the bodies' radii and masses.
+    ContactPair pairOf(const Entry& entry, const ParticleCloud& cloud) const;
 
     const Scene& scene_;
     SoftContactLaw law_;
     std::vector<std::size_t> softWalls_; ///< surface indices
-    double skin_ = 0;                    ///< [m] of the current list
+    /// E*, G*, yield stress and adhesion of two particles, and of a particle on each surface
+    /// (radius and mass are the entry's: pairOf).
+    ContactPair particleModuli_;
+    std::vector<ContactPair> wallModuli_;
+    double skin_ = 0; ///< [m] of the current list
     CellGrid grid_;
     std::vector<Entry> entries_;
-    std::vector<ContactLoad> loads_; ///< per entry, scratch of updateLoads
+    std::vector<ContactLoad> loads_;             ///< per entry, written for the touching ones
+    std::vector<std::uint32_t> touchingEntries_; ///< ascending, scratch of updateLoads
+    /// The particles that the last updateLoads gave a load (ascending cloud indices), with
+    /// their ids: every other particle's load is zero, so the kicks visit only these while
+    /// the cloud keeps them where they were (kickedByList).
+    std::vector<std::uint32_t> loaded_;
+    std::vector<ParticleId> loadedIds_;
+    bool loadsListed_ = false;           ///< loaded_ holds every particle with a load
+    std::vector<std::uint8_t> isLoaded_; ///< per particle, scratch of collectLoaded
     /// entryOf_[entryStart_[i] … entryStart_[i + 1]) are particle i's entries, as 2 e + side
     /// (side 1: the particle is the entry's second body).
     std::vector<std::uint32_t> entryStart_, entryOf_;

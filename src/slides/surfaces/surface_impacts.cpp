@@ -14,16 +14,22 @@ namespace slides {
 
 SurfaceImpacts::SurfaceImpacts(const Scene& scene, const CarrierField& carrier)
     : scene_(scene), rebounds_(scene.surfaces.size(), 0) {
-    for (const Surface& surface : scene.surfaces)
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        const Surface& surface = scene.surfaces[s];
         walls_.push_back(surface.patch.empty()
                              ? std::nullopt
                              : std::optional<PatchWall>(carrier.patchTriangles(surface.patch)));
+        if (!meetsBySoftContact(scene.collisions, surface.interaction)) metAtTouch_.push_back(s);
+    }
 }
 
 ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec3& start,
                                   const Vec3& startVelocity, double stepLength, double stepEnd,
                                   const std::optional<StepTemperature>& temperature,
                                   Arrival& arrival) {
+    // Soft walls meet particles by forces (collide/); with only those, nothing is met here, and
+    // the deposit, which only surfaces met here fill, stays empty.
+    if (metAtTouch_.empty()) return ImpactResult::none;
     Path path{start, startVelocity, stepLength};
     ImpactResult result = ImpactResult::none;
     // A rebound can meet another surface, or the deposit, in the rest of the step.
@@ -89,9 +95,8 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     double fraction = 2.0;
     Vec3 contactVelocity = Vec3::Zero();
     Vec3 wallNormal = Vec3::UnitX(), wallPoint = Vec3::Zero(); // the touched plane
-    for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
+    for (const std::size_t s : metAtTouch_) {
         const Surface& plane = scene_.surfaces[s];
-        if (meetsBySoftContact(scene_.collisions, plane.interaction)) continue;
         // A sink takes whatever touches it, as before collisions existed.
         const auto meeting = [&](double touch, const Vec3& normal) {
             return plane.interaction == SurfaceInteraction::absorb

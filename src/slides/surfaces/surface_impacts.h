@@ -102,6 +102,7 @@ private:
 
     const Scene& scene_;
     std::vector<std::optional<PatchWall>> walls_; ///< per surface: its patch, if it is one
+    std::vector<std::size_t> metAtTouch_; ///< the surfaces met here, at the touch: not soft walls
     Deposit deposit_;
     std::vector<std::uint64_t> rebounds_;
 };
