@@ -44,10 +44,12 @@ void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     sortByKey(static_cast<Key>(boxCells));
 
     sorted_.resize(count);
+    sortedPositions_.resize(count);
     cellKey_.clear();
     cellStart_.clear();
     for (std::size_t slot = 0; slot < count; ++slot) {
         sorted_[slot] = keyed_[slot].point;
+        sortedPositions_[slot] = points[keyed_[slot].point];
         if (slot == 0 || keyed_[slot].key != keyed_[slot - 1].key) {
             cellKey_.push_back(keyed_[slot].key);
             cellStart_.push_back(static_cast<std::uint32_t>(slot));

@@ -37,12 +37,24 @@ public:
     /// Occupied cells of the grid, for splitting forEachPairInCells among threads.
     std::size_t occupiedCellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
 
+    /// The point in slot s of the cell order (slots of one cell are consecutive), and where it
+    /// is: the points gathered in that order, so that a search over slots reads memory in order.
+    std::uint32_t pointAt(std::size_t slot) const { return sorted_[slot]; }
+    const Vec3& positionAt(std::size_t slot) const { return sortedPositions_[slot]; }
+
     /// Calls visit(i, j) for every pair of points in the same cell or in neighbouring cells
     /// whose first cell is among occupied cells [first, last): over all of them, each pair of
     /// points closer than one cell edge exactly once (13 of the 26 neighbours a cell, one of
     /// each opposite pair).
     template <typename Visit>
     void forEachPairInCells(std::size_t first, std::size_t last, Visit visit) const {
+        forEachSlotPairInCells(
+            first, last, [&](std::uint32_t a, std::uint32_t b) { visit(sorted_[a], sorted_[b]); });
+    }
+
+    /// forEachPairInCells by slots: visit(s, t) for the points in slots s and t.
+    template <typename Visit>
+    void forEachSlotPairInCells(std::size_t first, std::size_t last, Visit visit) const {
         if (first >= last) return;
         // The rows (dx, dy) = (0, 1), (1, −1), (1, 0), (1, 1), each of dz = −1, 0, 1.
         const std::array<Key, 4> rowOffset{yStride_, xStride_ - yStride_, xStride_,
@@ -55,10 +67,10 @@ public:
             const auto visitWith = [&](std::size_t other) {
                 for (std::uint32_t a = begin; a < end; ++a)
                     for (std::uint32_t b = cellStart_[other]; b < cellStart_[other + 1]; ++b)
-                        visit(sorted_[a], sorted_[b]);
+                        visit(a, b);
             };
             for (std::uint32_t a = begin; a < end; ++a)
-                for (std::uint32_t b = a + 1; b < end; ++b) visit(sorted_[a], sorted_[b]);
+                for (std::uint32_t b = a + 1; b < end; ++b) visit(a, b);
             const Key key = cellKey_[cell];
             if (cellKey_[cell + 1] == key + 1) visitWith(cell + 1); // the sentinel never matches
             for (std::size_t row = 0; row < 4; ++row) {
@@ -121,13 +133,15 @@ private:
     std::vector<Key> cellKey_;              ///< occupied cells' numbers ascending, then a sentinel
     std::vector<std::uint32_t> cellStart_;  ///< cell c holds sorted_[start[c], start[c+1])
     std::vector<std::uint32_t> sorted_;     ///< point indices ordered by cell
+    std::vector<Vec3> sortedPositions_;     ///< the points in that order
     std::vector<Keyed> keyed_, spare_;      ///< scratch of build
     std::vector<std::uint32_t> digitCount_; ///< scratch of build
 };
 
-/// What test(a, b) finds for every pair of points the grid offers (forEachPairInBuckets), the
-/// pairs for which it returns a value: searched in parallel over blocks of cells and joined in
-/// cell order, so the list is the same for any number of threads.
+/// What test(s, t) finds for every pair of slots the grid offers (forEachSlotPairInCells; the
+/// points are grid.pointAt(s), pointAt(t)), the pairs for which it returns a value: searched in
+/// parallel over blocks of cells and joined in cell order, so the list is the same for any
+/// number of threads.
 template <typename Found, typename Test>
 std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
     const auto cells = static_cast<std::ptrdiff_t>(grid.occupiedCellCount());
@@ -147,10 +161,10 @@ std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
 #pragma omp for schedule(static)
         for (std::ptrdiff_t first = 0; first < cells; first += chunk) {
             const auto last = static_cast<std::size_t>(std::min(first + chunk, cells));
-            grid.forEachPairInCells(static_cast<std::size_t>(first), last,
-                                    [&](std::uint32_t a, std::uint32_t b) {
-                                        if (auto pair = test(a, b)) found.push_back(*pair);
-                                    });
+            grid.forEachSlotPairInCells(static_cast<std::size_t>(first), last,
+                                        [&](std::uint32_t a, std::uint32_t b) {
+                                            if (auto pair = test(a, b)) found.push_back(*pair);
+                                        });
         }
     }
     std::vector<Found> all;

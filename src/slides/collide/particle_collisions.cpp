@@ -27,7 +27,8 @@ void ParticleCollisions::findContacts(const ParticleCloud& cloud,
     // at most that plus |s − ½| |Δd| ≤ d_max further: cells of 2 R_max + d_max hold every pair.
     grid_.build(midpoints_, 2 * largestRadius + longestChord);
 
-    contacts_ = collectPairs<ParticleContact>(grid_, [&](std::uint32_t a, std::uint32_t b) {
+    contacts_ = collectPairs<ParticleContact>(grid_, [&](std::uint32_t s, std::uint32_t t) {
+        const std::uint32_t a = grid_.pointAt(s), b = grid_.pointAt(t);
         const auto fraction = sweptContactFraction(startPositions[a] - startPositions[b],
                                                    cloud.position[a] - cloud.position[b],
                                                    cloud.radius[a] + cloud.radius[b]);

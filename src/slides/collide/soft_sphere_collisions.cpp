@@ -113,10 +113,15 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     skin_ = scene_.collisions.softSphere.neighbourSkin * largestRadius;
 
     grid_.build(cloud.position, 2 * largestRadius + skin_);
-    entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t a, std::uint32_t b) {
-        const double reach = cloud.radius[a] + cloud.radius[b] + skin_;
-        if ((cloud.position[a] - cloud.position[b]).squaredNorm() >= reach * reach)
+    // The search reads positions and radii in the grid's cell order, from memory in order.
+    slotRadius_.resize(cloud.size());
+    for (std::size_t slot = 0; slot < cloud.size(); ++slot)
+        slotRadius_[slot] = cloud.radius[grid_.pointAt(slot)];
+    entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t s, std::uint32_t t) {
+        const double reach = slotRadius_[s] + slotRadius_[t] + skin_;
+        if ((grid_.positionAt(s) - grid_.positionAt(t)).squaredNorm() >= reach * reach)
             return std::optional<Entry>();
+        std::uint32_t a = grid_.pointAt(s), b = grid_.pointAt(t);
         if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
         return std::optional<Entry>({a, static_cast<std::int32_t>(b), {}, false});
     });

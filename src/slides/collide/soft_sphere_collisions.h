@@ -105,6 +105,7 @@ private:
     std::vector<ContactPair> wallModuli_;
     double skin_ = 0; ///< [m] of the current list
     CellGrid grid_;
+    std::vector<double> slotRadius_; ///< radii in the grid's cell order, scratch of buildList
     std::vector<Entry> entries_;
     std::vector<ContactLoad> loads_;             ///< per entry, written for the touching ones
     std::vector<std::uint32_t> touchingEntries_; ///< ascending, scratch of updateLoads

@@ -100,8 +100,11 @@ void Stepper::step() {
         cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
         softSpheres_->halfKick(cloud_, stepLengths_);
     }
-    startPositions_ = cloud_.position;
-    startVelocities_ = cloud_.velocity;
+    // The paths' starts, for impulse collisions, heating and meeting surfaces at the touch.
+    if (collisions_ || heating_.on() || surfaces_.meetsAtTouch()) {
+        startPositions_ = cloud_.position;
+        startVelocities_ = cloud_.velocity;
+    }
     advance(h);
     if (heating_.on()) {
         startTemperatures_ = cloud_.temperature;
@@ -216,6 +219,21 @@ std::optional<StepTemperature> Stepper::temperatureOver(std::size_t i) const {
 }
 
 void Stepper::meetSurfaces(double h) {
+    if (!surfaces_.meetsAtTouch()) {
+        // Nothing to meet: only a particle that is not finite or has left the box needs the
+        // loop below, and a parallel look finds whether there is one.
+        const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
+        bool attention = false;
+#pragma omp parallel for schedule(static)                                                          \
+    reduction(||                                                                                   \
+              : attention) if (count >= minimumParallelBatch)
+        for (std::ptrdiff_t i = 0; i < count; ++i)
+            attention = attention || !cloud_.position[i].allFinite() ||
+                        !cloud_.velocity[i].allFinite() ||
+                        !insideBox(scene_.domain, cloud_.position[i]) ||
+                        (!cloud_.carrierLocation.empty() && cloud_.carrierLocation[i] < -1);
+        if (!attention) return;
+    }
     surfaces_.indexDeposit();
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
@@ -230,8 +248,10 @@ void Stepper::meetSurfaces(double h) {
         }
         Arrival arrival;
         const ImpactResult impact =
-            surfaces_.meet(cloud_, i, startPositions_[i], startVelocities_[i], stepLengths_[i],
-                           time_ + h, temperatureOver(i), arrival);
+            surfaces_.meetsAtTouch()
+                ? surfaces_.meet(cloud_, i, startPositions_[i], startVelocities_[i],
+                                 stepLengths_[i], time_ + h, temperatureOver(i), arrival)
+                : ImpactResult::none;
         if (impact == ImpactResult::arrived) {
             arrivals_.push_back(arrival);
         } else if (insideBox(scene_.domain, cloud_.position[i]) &&

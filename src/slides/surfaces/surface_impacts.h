@@ -63,6 +63,9 @@ public:
     void addToDeposit(const Arrival& stuck) {
         deposit_.add(stuck.position, stuck.radius, stuck.surface);
     }
+    /// Whether any surface meets particles here, at the touch (not only soft walls, which
+    /// meet them by forces): without one, meet never changes a particle.
+    bool meetsAtTouch() const { return !metAtTouch_.empty(); }
     /// Makes the particles stuck so far obstacles for the next meetings.
     void indexDeposit() { deposit_.index(); }
 
