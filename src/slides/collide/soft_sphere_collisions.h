@@ -10,9 +10,12 @@
 //    when the cloud changed (injection, removal) or a particle moved more than s/2 since the
 //    last build, so no pair left out can touch. Each entry carries its contact's tangential
 //    spring, handed over to the rebuilt list by the particles' ids.
-// 2. Loads of every entry, in parallel; then each particle sums its entries' loads in the order
-//    of its partners' ids. The sum is thus the same for any thread count and any rebuild
-//    history, and a pair's equal and opposite forces conserve momentum to round-off.
+// 2. Loads of the touching entries, in parallel (a squared distance tells the apart ones before
+//    any root is taken); then each particle in contact sums its entries' loads in the order of
+//    its partners' ids. The sum is thus the same for any thread count and any rebuild history,
+//    and a pair's equal and opposite forces conserve momentum to round-off. Only particles in
+//    contact carry a load, so the half kicks visit only those while the cloud keeps them at
+//    their indices (all particles otherwise, skipping zero loads alike).
 // With temperatures tracked (physics.heatTransfer, collisions.heating), each contact's dissipated
 // power (ContactLoad::dissipatedPower) over the step heats its particles alike (Eq. 2.117).
 // Soft walls are the surfaces whose interaction is rebound (meetsBySoftContact); absorbing and
