@@ -44,6 +44,15 @@ protected:
     void writeVelocity(const std::string& body) {
         std::ofstream(case_ / "0" / "U") << velocityHeader << body;
     }
+    void writePoints(const std::vector<Vec3>& points) {
+        std::ofstream out(case_ / "constant" / "polyMesh" / "points");
+        out << "FoamFile\n{\n    format ascii;\n    class vectorField;\n    object points;\n}\n"
+            << points.size() << "\n(\n";
+        out.precision(17);
+        for (const Vec3& point : points)
+            out << "(" << point.x() << " " << point.y() << " " << point.z() << ")\n";
+        out << ")\n";
+    }
     /// The error reading the mesh and then U.
     InputError readError() {
         try {
@@ -102,14 +111,9 @@ TEST_F(ForeignCase, ConstraintTypesCoverTheSymmetryPatch) {
 // cell volume detected"). Its first cell's volume is minus that of the box's first cell.
 TEST_F(ForeignCase, MirroredMeshHasInvertedCells) {
     const FoamMesh box = readFoamMesh(data / "boxAscii");
-    std::ofstream points(case_ / "constant" / "polyMesh" / "points");
-    points << "FoamFile\n{\n    format ascii;\n    class vectorField;\n    object points;\n}\n"
-           << box.points.size() << "\n(\n";
-    points.precision(17);
-    for (const Vec3& point : box.points)
-        points << "(" << -point.x() << " " << point.y() << " " << point.z() << ")\n";
-    points << ")\n";
-    points.close();
+    std::vector<Vec3> mirrored = box.points;
+    for (Vec3& point : mirrored) point.x() = -point.x();
+    writePoints(mirrored);
     const InputError error = readError();
     EXPECT_EQ(error.file(), (case_ / "constant" / "polyMesh").string());
     EXPECT_TRUE(error.reason().starts_with("cell 0 is inverted or tangled: volume -"))
@@ -120,8 +124,8 @@ TEST_F(ForeignCase, MirroredMeshHasInvertedCells) {
         << error.what();
 }
 
-// One interior point moved through the cells around it: each of them keeps a positive volume
-// in sum, but the tetrahedra the locator walks fold over.
+// One interior point moved in x through its neighbours to 1 cm beyond the box's side: the cells
+// that share it fold over (tetrahedra of the locator's decomposition turn inside out).
 TEST_F(ForeignCase, TangledCellIsRefused) {
     FoamMesh box = readFoamMesh(data / "boxAscii");
     const auto interior = std::find_if(box.points.begin(), box.points.end(), [&](const Vec3& p) {
@@ -130,14 +134,7 @@ TEST_F(ForeignCase, TangledCellIsRefused) {
     });
     ASSERT_NE(interior, box.points.end());
     (*interior).x() += 0.9 * (box.boundsMax.x() - interior->x()) + 0.01;
-    std::ofstream points(case_ / "constant" / "polyMesh" / "points");
-    points << "FoamFile\n{\n    format ascii;\n    class vectorField;\n    object points;\n}\n"
-           << box.points.size() << "\n(\n";
-    points.precision(17);
-    for (const Vec3& point : box.points)
-        points << "(" << point.x() << " " << point.y() << " " << point.z() << ")\n";
-    points << ")\n";
-    points.close();
+    writePoints(box.points);
     const InputError error = readError();
     EXPECT_EQ(error.file(), (case_ / "constant" / "polyMesh").string());
     EXPECT_NE(error.reason().find("is inverted or tangled"), std::string::npos) << error.what();
