@@ -1,6 +1,7 @@
 #include "slides/integrate/stepper.h"
 
 #include "slides/core/parallel.h"
+#include "slides/integrate/relaxation_batch.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
 
@@ -123,7 +124,7 @@ void Stepper::step() {
 
 namespace {
 
-/// One step of `scheme` (relaxExactly or advanceExplicitly) over fraction × h_i for every
+/// One step of `scheme` (advanceExplicitly) over fraction × h_i for every
 /// particle i with gas velocity u, the response time τ from the slip u − w (w = v, or the
 /// midpoint velocity).
 template <typename Scheme>
@@ -139,8 +140,7 @@ void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
     }
 }
 
-// The schemes as function objects, so advanceEach inlines them into its loop.
-constexpr auto exactRelaxation = [](auto&&... step) { relaxExactly(step...); };
+// The scheme as a function object, so advanceEach inlines it into its loop.
 constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); };
 
 } // namespace
@@ -171,7 +171,7 @@ void Stepper::advance(double h) {
         advanceEach(explicitStep, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
         break;
     case Integrator::exponentialEuler:
-        advanceEach(exactRelaxation, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
+        relaxBatchExactly({x, v, x, v, u, v, radius, stepLengths_}, drag_, a, 1.0);
         break;
     case Integrator::exponentialMidpoint: {
         // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
@@ -180,12 +180,12 @@ void Stepper::advance(double h) {
         auto& vm = midpointVelocities_;
         xm = x;
         vm = v;
-        advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
+        relaxBatchExactly({xm, vm, xm, vm, u, v, radius, stepLengths_}, drag_, a, 0.5);
         midpointLocations_ = cloud_.carrierLocation;
         sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
         dispersion_.addTo(midpointGas_.velocity);
-        advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
-                    stepLengths_, 1.0);
+        relaxBatchExactly({x, v, x, v, midpointGas_.velocity, vm, radius, stepLengths_}, drag_, a,
+                          1.0);
         break;
     }
     }
