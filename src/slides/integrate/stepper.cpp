@@ -217,8 +217,22 @@ std::optional<StepTemperature> Stepper::temperatureOver(std::size_t i) const {
 
 void Stepper::meetSurfaces(double h) {
     surfaces_.indexDeposit();
+    // In parallel, the particles that only fly on: finite, in the box and the mesh, their path
+    // touching no surface; the rest are met one by one in order (arrivals, deposit, removal).
+    const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
+    std::vector<std::uint8_t> fliesOn(cloud_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t n = 0; n < count; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        const Vec3& x = cloud_.position[i];
+        fliesOn[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
+                     insideBox(scene_.domain, x) &&
+                     (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
+                     !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]);
+    }
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
+        if (fliesOn[i]) continue;
         const Vec3& x = cloud_.position[i];
         const Vec3& v = cloud_.velocity[i];
         if (!x.allFinite() || !v.allFinite()) {
