@@ -174,17 +174,16 @@ void Stepper::advance(double h) {
         relaxBatchExactly({x, v, x, v, u, v, radius, stepLengths_}, drag_, a, 1.0);
         break;
     case Integrator::exponentialMidpoint: {
-        // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
-        // whole step with u and τ frozen at their midpoint values (second order).
-        auto& xm = midpointPositions_;
-        auto& vm = midpointVelocities_;
-        xm = x;
-        vm = v;
-        relaxBatchExactly({xm, vm, xm, vm, u, v, radius, stepLengths_}, drag_, a, 0.5);
+        // Exponential midpoint rule: predict to t + h/2 with the state at t (into the cloud's
+        // arrays), then take the whole step from the state at t with u and τ frozen at their
+        // midpoint values (second order).
+        const auto& x0 = startPositions_;
+        const auto& v0 = startVelocities_;
+        relaxBatchExactly({x0, v0, x, v, u, v0, radius, stepLengths_}, drag_, a, 0.5);
         midpointLocations_ = cloud_.carrierLocation;
-        sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
+        sampleCarrier(x, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
         dispersion_.addTo(midpointGas_.velocity);
-        relaxBatchExactly({x, v, x, v, midpointGas_.velocity, vm, radius, stepLengths_}, drag_, a,
+        relaxBatchExactly({x0, v0, x, v, midpointGas_.velocity, v, radius, stepLengths_}, drag_, a,
                           1.0);
         break;
     }
