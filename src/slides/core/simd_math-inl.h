@@ -19,7 +19,6 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
-#include <algorithm>
 #include <cstddef>
 
 HWY_BEFORE_NAMESPACE();
