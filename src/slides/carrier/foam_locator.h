@@ -5,8 +5,10 @@
 // share the face triangles, so the tetrahedra tile the mesh. locate() walks from a start cell
 // across the tetrahedron face opposite the most negative barycentric weight (a visibility
 // walk: O(1) per particle step when the start is the particle's previous cell); without a start,
-// or when the walk reaches the boundary, a uniform bin grid over the cells' bounding boxes
-// finds the cell. A point in no cell is outside, with the patch the walk left through.
+// or when the walk reaches the boundary, a uniform bin grid over the cells' bounding boxes gives
+// the cell with the nearest centre to walk from, and when that walk leaves the mesh (a concave
+// boundary) the bin's cells whose boxes hold the point are tested. A point in no cell is
+// outside, with the patch the walk left through.
 //
 //     FoamLocator locator(mesh);  TetLocation at = locator.locate(x, previousCell);
 #pragma once
@@ -50,6 +52,10 @@ public:
     static constexpr double tolerance = 1e-10;
 
 private:
+    /// The visibility walk from startCell: the location holding point, or not found with
+    /// boundaryFace the boundary face it reached (−1 when it was lost: a cycle, an open cell).
+    TetLocation walk(const Vec3& point, int startCell, int& boundaryFace) const;
+
     const FoamMesh& mesh_;
     std::vector<Vec3> faceMidpoints_; ///< point average of each face
     // Bin grid: cells whose bounding box overlaps bin b are binCells[binOffsets[b] ..].
@@ -58,6 +64,7 @@ private:
     std::array<int, 3> bins_{1, 1, 1};
     std::vector<int> binOffsets_;
     std::vector<int> binCells_;
+    std::vector<Vec3> cellLow_, cellHigh_; ///< each cell's bounding box, with slack
 };
 
 /// Barycentric weights of point in the tetrahedron with the given vertices.
