@@ -147,8 +147,36 @@ TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
     return searched;
 }
 
+void FoamLocator::startTetrahedron(const Vec3& point, int cell, int& face, int& edge) const {
+    // The face whose point-average lies most in the point's direction from the cell centre,
+    // then the face point most in its direction from that average: usually the tetrahedron
+    // holding the point or its neighbour, so the walk takes a step or none.
+    const Vec3& centre = mesh_.cellCentres[cell];
+    const Vec3 towards = point - centre;
+    double best = -INFINITY;
+    for (const int f : mesh_.facesOf(cell)) {
+        const Vec3 spoke = faceMidpoints_[f] - centre;
+        const double reach = towards.dot(spoke) / spoke.squaredNorm();
+        if (reach > best) {
+            best = reach;
+            face = f;
+        }
+    }
+    const auto ring = mesh_.pointsOf(face);
+    const Vec3 across = point - faceMidpoints_[face];
+    best = -INFINITY;
+    for (int j = 0; j < static_cast<int>(ring.size()); ++j) {
+        const double reach = across.dot(mesh_.points[ring[j]] - faceMidpoints_[face]);
+        if (reach > best) {
+            best = reach;
+            edge = j;
+        }
+    }
+}
+
 TetLocation FoamLocator::walk(const Vec3& point, int startCell, int& boundaryFace) const {
     int cell = startCell, face = mesh_.facesOf(cell)[0], edge = 0;
+    startTetrahedron(point, cell, face, edge);
     // A walk longer than this is cycling on a badly shaped mesh: lost.
     const int maximumSteps = 1000;
     for (int step = 0; step < maximumSteps; ++step) {
