@@ -39,7 +39,8 @@ public:
 
     /// The location of point, walking from startCell (a global search when startCell < 0).
     TetLocation locate(const Vec3& point, int startCell) const;
-    /// The location of point by the bin grid (first cell that holds it), or outside.
+    /// The location of point by the bin grid (a walk from the bin's cell with the nearest
+    /// centre; else the first of its cells that holds it), or outside.
     TetLocation locateGlobally(const Vec3& point) const;
     /// The location of point within cell, if the cell holds it (weights ≥ −tolerance).
     std::optional<TetLocation> locateInCell(const Vec3& point, int cell) const;
