@@ -3,22 +3,28 @@
 
     python3 tools/render_case.py CASE/slides out.png [--normal x|y|z]
 
-Shows the last frame listed in particles.pvd (points coloured by speed) in front of a slice of
-carrier.vti through the jet (coloured by magU), seen from the side with a parallel camera; the
-slice is the lattice plane through the fastest gas, moved behind the particles as a backdrop.
+Shows the last frame of particles.pvd that holds particles (points coloured by speed) in front
+of a slice of carrier.vti through the jet (coloured by magU), seen from the side with a parallel
+camera; the slice is the lattice plane through the fastest gas, moved behind the particles as a
+backdrop. The title and colour bars have their own bands above and below the picture.
 The jet axis is the lattice axis of the largest mean |U| component; the view looks along the
 other axis with the smaller mean |U| component (the extrusion axis of a planar jet), or --normal.
 Needs VTK's Python bindings (Debian: python3-vtk9); renders off screen, without a display
-under xvfb-run (Debian: xvfb).
+under xvfb-run (Debian: xvfb; tools/setup installs both).
 """
 import argparse
 import os
+import re
 import shutil
 import sys
 import xml.etree.ElementTree as ElementTree
 
-# Debian's VTK renders through X even off screen: without a display, run under a virtual one.
-if not os.environ.get("DISPLAY") and shutil.which("xvfb-run"):
+# Debian's VTK renders through X even off screen: without a display, run under a virtual one
+# (without either, VTK aborts the process when it opens the window).
+if not os.environ.get("DISPLAY"):
+    if not shutil.which("xvfb-run"):
+        sys.exit("render_case.py: no X display (DISPLAY is not set) and no xvfb-run to make one: "
+                 "install xvfb (tools/setup does)")
     os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
 
 try:
@@ -47,16 +53,34 @@ from vtkmodules.vtkRenderingCore import (
 from vtkmodules.vtkCommonCore import vtkLookupTable
 
 AXES = "xyz"
+# Fractions of the window height: colour bars below the picture, the title above it.
+BAR_BAND = 0.15
+TITLE_BAND = 0.07
+WINDOW_SIZE = (1000, 600)
+
+
+def point_count(vtp):
+    """NumberOfPoints of a .vtp file, read from its XML head (the data may be appended raw)."""
+    with open(vtp, "rb") as file:
+        head = file.read(4096)
+    found = re.search(rb'NumberOfPoints="(\d+)"', head)
+    return int(found.group(1)) if found else 0
 
 
 def choose_frame(pvd, time):
-    """(time, path) of the DataSet in the .pvd nearest to time (the last one if time is None)."""
+    """(time, path) of the DataSet in the .pvd nearest to time; without a time the last one that
+    holds particles (once every particle has arrived or left, the last frames are empty), or
+    the last one when none does."""
     data_sets = ElementTree.parse(pvd).getroot().findall("./Collection/DataSet")
     if not data_sets:
         sys.exit(f"render_case.py: {pvd} lists no frames")
-    chosen = data_sets[-1] if time is None else min(
-        data_sets, key=lambda data_set: abs(float(data_set.get("timestep")) - time))
-    return float(chosen.get("timestep")), os.path.join(os.path.dirname(pvd), chosen.get("file"))
+    path = lambda data_set: os.path.join(os.path.dirname(pvd), data_set.get("file"))
+    if time is None:
+        holding = [data_set for data_set in data_sets if point_count(path(data_set)) > 0]
+        chosen = (holding or data_sets)[-1]
+    else:
+        chosen = min(data_sets, key=lambda data_set: abs(float(data_set.get("timestep")) - time))
+    return float(chosen.get("timestep")), path(chosen)
 
 
 def read(reader_class, path):
@@ -76,21 +100,38 @@ def lookup_table(value_range, hue_range, saturation_range, value_range_hsv):
     return table
 
 
+def label(text, x_position, y_position, size):
+    """Dark text whose top left corner is at the given fractions of the window."""
+    actor = vtkTextActor()
+    actor.SetInput(text)
+    actor.GetTextProperty().SetColor(0.1, 0.1, 0.1)
+    actor.GetTextProperty().SetFontSize(size)
+    actor.GetTextProperty().SetVerticalJustificationToTop()
+    actor.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+    actor.SetPosition(x_position, y_position)
+    return actor
+
+
 def scalar_bar(table, title, x_position):
+    """A horizontal colour bar in the band below the picture: its title above it, its labels
+    below it (VTK's own title would sit among the labels)."""
     bar = vtkScalarBarActor()
     bar.SetLookupTable(table)
-    bar.SetTitle(title)
     bar.SetNumberOfLabels(5)
     bar.SetLabelFormat("%.3g")
     bar.SetOrientationToHorizontal()
-    bar.SetPosition(x_position, 0.02)
+    bar.SetPosition(x_position, 0.005)
     bar.SetWidth(0.4)
-    bar.SetHeight(0.12)
-    for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
-        text.SetColor(0.1, 0.1, 0.1)
-        text.ShadowOff()
-        text.ItalicOff()
-    return bar
+    bar.SetHeight(BAR_BAND - 0.05)
+    bar.SetTextPositionToPrecedeScalarBar()
+    bar.UnconstrainedFontSizeOn()  # the size below, not one grown to the bar's height
+    text = bar.GetLabelTextProperty()
+    text.SetColor(0.1, 0.1, 0.1)
+    text.SetFontSize(14)
+    text.BoldOff()
+    text.ShadowOff()
+    text.ItalicOff()
+    return bar, label(title, x_position + 0.01, BAR_BAND - 0.005, 15)
 
 
 def side_view(carrier, normal_option):
@@ -180,23 +221,25 @@ def main():
     # No carrier.vti: a run without gas (carrier none), particles alone.
     carrier = read(vtkXMLImageDataReader, carrier_file) if os.path.exists(carrier_file) else None
 
+    # The picture in the middle band; title and colour bars in a renderer of their own over
+    # the whole window, so they never cover the picture.
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
+    renderer.SetViewport(0, BAR_BAND, 1, 1 - TITLE_BAND)
+    labels = vtkRenderer()
+    labels.SetBackground(1, 1, 1)
     jet_axis, normal, up, side = side_view(carrier, arguments.normal)
     dots, speed_table = particle_actor(particles)
     renderer.AddActor(dots)
-    renderer.AddActor2D(scalar_bar(speed_table, "particle speed [m/s]", 0.05))
+    for actor in scalar_bar(speed_table, "particle speed [m/s]", 0.05):
+        labels.AddActor2D(actor)
     if carrier is not None:
         backdrop, gas_table = carrier_backdrop(carrier, normal, side)
         renderer.AddActor(backdrop)
-        renderer.AddActor2D(scalar_bar(gas_table, "carrier magU [m/s]", 0.55))
-    title = vtkTextActor()
-    title.SetInput(f"{os.path.basename(frame_file)}   t = {time:.6g} s   "
-                   f"{particles.GetNumberOfPoints()} particles")
-    title.GetTextProperty().SetColor(0.1, 0.1, 0.1)
-    title.GetTextProperty().SetFontSize(18)
-    title.SetDisplayPosition(12, 570)
-    renderer.AddActor2D(title)
+        for actor in scalar_bar(gas_table, "carrier magU [m/s]", 0.55):
+            labels.AddActor2D(actor)
+    labels.AddActor2D(label(f"{os.path.basename(frame_file)}   t = {time:.6g} s   "
+                            f"{particles.GetNumberOfPoints()} particles", 0.012, 0.985, 18))
 
     # From the side: along the view normal, jet axis pointing right, parallel projection.
     camera = renderer.GetActiveCamera()
@@ -211,11 +254,16 @@ def main():
     camera.SetPosition(position)
     camera.SetViewUp(view_up)
     renderer.ResetCamera()
-    camera.Zoom(1.1)
+    # Fill the picture band: the half height that shows both the up and the jet extent.
+    aspect = (1 - BAR_BAND - TITLE_BAND) * WINDOW_SIZE[1] / WINDOW_SIZE[0]
+    jet_half = (bounds[2 * jet_axis + 1] - bounds[2 * jet_axis]) / 2
+    up_half = (bounds[2 * up + 1] - bounds[2 * up]) / 2
+    camera.SetParallelScale(1.05 * max(up_half, jet_half * aspect, 1e-9))
 
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
-    window.SetSize(1000, 600)
+    window.SetSize(*WINDOW_SIZE)
+    window.AddRenderer(labels)
     window.AddRenderer(renderer)
     window.Render()
     image = vtkWindowToImageFilter()

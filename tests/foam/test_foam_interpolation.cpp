@@ -74,6 +74,27 @@ TEST(FoamLocator, AgreesWithBruteForceOnRandomPoints) {
     }
 }
 
+// A mesh graded 1:91 toward one corner (x ↦ x³ per axis, 6³ cells), as the impinging jet's mesh is
+// toward the nozzle: the search's bins, sized for one cell on average, hold dozens of cells
+// there. Points drawn densely toward that corner are found in the cell brute force finds, by the
+// search (a walk from the bin's nearest cell centre) and by walks from any cell.
+TEST(FoamLocator, SearchFindsPointsWhereBinsHoldManyCells) {
+    const FoamMesh mesh =
+        testing::hexBlockMesh(6, [](const Vec3& x) { return Vec3(x.array().cube()); });
+    const FoamLocator locator(mesh);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::uniform_int_distribution<int> anyCell(0, mesh.cellCount - 1);
+    for (int n = 0; n < 2000; ++n) {
+        Vec3 point;
+        for (int a = 0; a < 3; ++a) point[a] = std::pow(unit(random), 6.0); // dense near 0
+        const TetLocation expected = bruteForce(locator, mesh, point);
+        ASSERT_TRUE(expected.found()) << point.transpose();
+        EXPECT_EQ(locator.locate(point, -1).cell, expected.cell) << point.transpose();
+        EXPECT_EQ(locator.locate(point, anyCell(random)).cell, expected.cell) << point.transpose();
+    }
+}
+
 // Points exactly on mesh points, edges, internal face centres and face point-averages are found
 // (they lie on several cells' closures: any of them is right) from any start cell.
 TEST(FoamLocator, FindsPointsOnFacesEdgesAndVertices) {

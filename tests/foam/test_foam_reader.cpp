@@ -189,7 +189,8 @@ TEST_F(BadField, UniformAndPatchValues) {
 // to the cells as zeroGradient (which put U ≈ 0.7 m/s at the plate's points in the jet).
 TEST_F(BadField, NoSlipWallIsAtRest) {
     writeField("volVectorField", "internalField uniform (1 2 3);\nboundaryField\n{\n"
-                                 " walls { type noSlip; }\n outlet { type zeroGradient; }\n}\n");
+                                 " walls { type noSlip; }\n \"(inlet|outlet)\" { type "
+                                 "zeroGradient; }\n sides { type symmetry; }\n}\n");
     const auto field = readFoamVolField<Vec3>(directory_ / "0", "p", mesh_);
     EXPECT_EQ(field.patchValues[2], std::vector<Vec3>(12, Vec3::Zero()));
     EXPECT_TRUE(field.patchValues[1].empty());
@@ -212,12 +213,16 @@ TEST_F(BadField, NonFiniteValuesNameTheCellOrFace) {
 }
 
 TEST_F(BadField, NegativeTurbulenceEnergyNamesTheCell) {
+    const std::string zeroGradient = "boundaryField { \".*\" { type zeroGradient; } }\n";
     std::ofstream(directory_ / "0" / "U")
         << "FoamFile\n{\n    format ascii;\n    class volVectorField;\n    object U;\n}\n"
-        << "internalField uniform (1 0 0);\n";
+        << "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (1 0 0);\n"
+        << zeroGradient;
     std::ofstream(directory_ / "0" / "k")
         << "FoamFile\n{\n    format ascii;\n    class volScalarField;\n    object k;\n}\n"
-        << "internalField nonuniform List<scalar> 12\n(\n1 2 3 4 5 6 7 8 9 -0.25 11 12\n);\n";
+        << "dimensions [0 2 -2 0 0 0 0];\n"
+        << "internalField nonuniform List<scalar> 12\n(\n1 2 3 4 5 6 7 8 9 -0.25 11 12\n);\n"
+        << zeroGradient;
     try {
         FoamCarrier carrier(directory_, {});
         ADD_FAILURE() << "a negative k was accepted";

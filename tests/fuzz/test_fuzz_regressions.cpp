@@ -1,4 +1,4 @@
-// ctest-labels: io
+// ctest-labels: io robustness
 // Replays every input kept in tests/fuzz/regressions/<target>/ (inputs on which a reader once
 // crashed, hung or misbehaved; tools/fuzz/run adds them) through the same entry point as the
 // fuzz target. Each must end in success or an InputError naming the file: under tools/sanitize
@@ -44,8 +44,10 @@ TEST(FuzzRegressions, DictionaryInputsEndInSuccessOrAnInputError) {
 class FoamFuzzRegressions : public testing::TestWithParam<const char*> {};
 
 TEST_P(FoamFuzzRegressions, CaseInputsEndInSuccessOrAnInputError) {
-    // tools/fuzz/run keeps an input only when it failed; none kept means none failed yet.
-    for (const auto& input : keptInputs(std::string("foam_") + GetParam())) {
+    // Seeds (the case's own files) and the inputs tools/fuzz/run kept because they failed.
+    const auto inputs = keptInputs(std::string("foam_") + GetParam());
+    ASSERT_FALSE(inputs.empty()) << "no inputs in tests/fuzz/regressions/foam_" << GetParam();
+    for (const auto& input : inputs) {
         SCOPED_TRACE(input.filename().string());
         EXPECT_NO_THROW(fuzz::readFoamCaseWithReplacedFile(bytesOf(input), GetParam()));
     }

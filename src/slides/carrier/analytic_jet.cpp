@@ -1,5 +1,7 @@
 #include "slides/carrier/analytic_jet.h"
 
+#include "slides/carrier/bickley_batch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -89,7 +91,9 @@ AnalyticJet::AnalyticJet(const JetNozzle& nozzle, const AnalyticJetParameters& p
 
 void AnalyticJet::sample(std::span<const Vec3> points, double /*time: steady*/, CarrierNeeds needs,
                          CarrierSample& out) const {
-    frame_.sample(profile_, points, needs, out);
+    if (needs.velocityGradient) return frame_.sample(profile_, points, needs, out);
+    out.resize(points.size(), needs); // U alone: the SIMD kernel
+    sampleBickleyVelocity(frame_, profile_, points, out.velocity);
 }
 
 double AnalyticJet::centrelineVelocity(double axialDistance) const {

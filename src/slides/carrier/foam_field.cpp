@@ -3,6 +3,8 @@
 #include "slides/carrier/foam_file.h"
 #include "slides/core/error.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -50,6 +52,45 @@ template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
     return values;
 }
 
+/// The dimension set [kg m s K mol A cd] a field of this name must have, and what it is.
+struct KnownDimensions {
+    const char* field;
+    std::array<double, 7> exponents;
+    const char* quantity;
+};
+constexpr std::array<KnownDimensions, 4> knownDimensions{{
+    {"U", {0, 1, -1, 0, 0, 0, 0}, "a velocity"},
+    {"k", {0, 2, -2, 0, 0, 0, 0}, "a turbulent kinetic energy"},
+    {"epsilon", {0, 2, -3, 0, 0, 0, 0}, "a dissipation rate"},
+    {"T", {0, 0, 0, 1, 0, 0, 0}, "a temperature"},
+}};
+
+std::string dimensionText(const std::vector<double>& exponents) {
+    std::ostringstream out;
+    out << "[";
+    for (std::size_t i = 0; i < exponents.size(); ++i) out << (i ? " " : "") << exponents[i];
+    out << "]";
+    return out.str();
+}
+
+/// `[e1 ... e7];` (or 5 exponents) after the keyword dimensions, checked against the field's
+/// known dimension set.
+void readDimensions(FoamFile& in, const KnownDimensions* known) {
+    in.expect('[');
+    std::vector<double> exponents;
+    while (in.peek() != ']' && exponents.size() < 8) exponents.push_back(in.scalar());
+    in.expect(']');
+    in.expect(';');
+    if (!known) return;
+    std::vector<double> expected(known->exponents.begin(), known->exponents.end());
+    std::vector<double> padded = exponents;
+    if (padded.size() == 5) padded.resize(7, 0.0);
+    if (padded != expected)
+        throw InputError(in.name(), in.line(), "dimensions",
+                         dimensionText(exponents) + " are not the dimensions of " + known->field +
+                             ", " + known->quantity + " " + dimensionText(expected));
+}
+
 /// The argument of a #include-like directive (a quoted path or a word).
 void skipDirectiveArgument(FoamFile& in) {
     if (in.peek() == '"')
@@ -63,21 +104,41 @@ void skipDirectiveArgument(FoamFile& in) {
 template <typename T>
 FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                                  const std::string& name, const FoamMesh& mesh) {
-    FoamFile in(timeDirectory / name);
+    // A value is at most ~80 characters in ASCII (a vector of three 17-digit numbers); a
+    // boundary patch may hold a few lists of face values (value, inletValue, ...).
+    const std::size_t boundaryFaces =
+        static_cast<std::size_t>(mesh.faceCount() - mesh.internalFaceCount());
+    const std::size_t maxBytes =
+        (std::size_t{1} << 20) +
+        128 * (static_cast<std::size_t>(mesh.cellCount) + 4 * boundaryFaces);
+    FoamFile in(timeDirectory / name, maxBytes,
+                "more than a field of " + std::to_string(mesh.cellCount) + " cells and " +
+                    std::to_string(boundaryFaces) + " boundary faces can hold");
+    const auto known = std::find_if(knownDimensions.begin(), knownDimensions.end(),
+                                    [&](const KnownDimensions& k) { return name == k.field; });
+    const KnownDimensions* dimensions = known == knownDimensions.end() ? nullptr : &*known;
+    bool hasDimensions = false;
     FoamVolField<T> field;
     field.file = in.name();
     if (in.className() != FieldTraits<T>::className)
         in.fail("class " + in.className() + ", expected " + FieldTraits<T>::className);
     field.patchValues.resize(mesh.patches.size());
     bool hasInternal = false;
+    std::vector<bool> covered(mesh.patches.size(), false);
+    bool constraintTypesSet = false;
+    int boundaryLine = 0; ///< 0 while the file has no boundaryField
     while (!in.atEnd()) {
         const std::string key = in.word();
         if (key[0] == '#') {
             skipDirectiveArgument(in);
+        } else if (key == "dimensions") {
+            readDimensions(in, dimensions);
+            hasDimensions = true;
         } else if (key == "internalField") {
             field.cells = readValues<T>(in, mesh.cellCount);
             hasInternal = true;
         } else if (key == "boundaryField") {
+            boundaryLine = in.line();
             in.expect('{');
             while (in.peek() != '}') {
                 // A patch by name, or a quoted regular expression for the patches without a
@@ -86,6 +147,7 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                 const std::string name = pattern ? in.quoted() : in.word();
                 if (name[0] == '#') { // #includeEtc "caseDicts/setConstraintTypes": no values
                     skipDirectiveArgument(in);
+                    constraintTypesSet = true;
                     continue;
                 }
                 const std::regex expression(pattern ? name : std::string("^$"));
@@ -95,6 +157,7 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
                                       field.patchValues[p].empty()
                                 : mesh.patches[p].name == name)
                         patches.push_back(p);
+                for (const std::size_t p : patches) covered[p] = true;
                 in.expect('{');
                 while (in.peek() != '}') {
                     const std::string entry = in.word();
@@ -124,7 +187,21 @@ FoamVolField<T> readFoamVolField(const std::filesystem::path& timeDirectory,
         }
     }
     if (!hasInternal) in.fail("no internalField");
+    if (dimensions && !hasDimensions)
+        throw InputError(
+            field.file, 0, "dimensions",
+            std::string("missing; ") + dimensions->field + " is " + dimensions->quantity + " " +
+                dimensionText({dimensions->exponents.begin(), dimensions->exponents.end()}));
     requireFinite(field, mesh);
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+        // #includeEtc "caseDicts/setConstraintTypes" sets the constraint patches' types.
+        const bool constraint = mesh.patches[p].type == PatchType::empty ||
+                                mesh.patches[p].type == PatchType::wedge ||
+                                mesh.patches[p].type == PatchType::symmetry;
+        if (!covered[p] && !(constraint && constraintTypesSet))
+            throw InputError(field.file, boundaryLine, "boundaryField",
+                             "no entry for patch '" + mesh.patches[p].name + "' of the mesh");
+    }
     return field;
 }
 

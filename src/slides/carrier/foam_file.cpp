@@ -15,23 +15,31 @@ namespace slides {
 
 namespace {
 
-std::string readPlain(const std::filesystem::path& path, bool& ok) {
+/// The bytes of path, at most maxBytes + 1 of them (one more tells that it is too long).
+std::string readPlain(const std::filesystem::path& path, std::size_t maxBytes, bool& ok) {
     std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    ok = static_cast<bool>(in);
-    return text.str();
+    std::string text;
+    char buffer[1 << 16];
+    while (in && text.size() <= maxBytes) {
+        in.read(buffer, sizeof buffer);
+        text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    }
+    ok = in.eof() || text.size() > maxBytes;
+    return text;
 }
 
-std::string readCompressed(const std::filesystem::path& path, bool& ok) {
+/// The inflated bytes of path, at most maxBytes + 1 of them: a small file that inflates to
+/// gigabytes is refused before it fills the memory.
+std::string readCompressed(const std::filesystem::path& path, std::size_t maxBytes, bool& ok) {
     std::string text;
     gzFile in = gzopen(path.c_str(), "rb");
     ok = in != nullptr;
     if (!in) return text;
     char buffer[1 << 16];
     int count = 0;
-    while ((count = gzread(in, buffer, sizeof buffer)) > 0) text.append(buffer, count);
-    ok = count == 0;
+    while (text.size() <= maxBytes && (count = gzread(in, buffer, sizeof buffer)) > 0)
+        text.append(buffer, static_cast<std::size_t>(count));
+    ok = count >= 0;
     gzclose(in);
     return text;
 }
@@ -47,17 +55,28 @@ bool FoamFile::exists(const std::filesystem::path& path) {
            std::filesystem::is_regular_file(path.string() + ".gz");
 }
 
-FoamFile::FoamFile(const std::filesystem::path& path) : name_(path.string()) {
+FoamFile::FoamFile(const std::filesystem::path& path, std::size_t maxBytes, const std::string& why)
+    : name_(path.string()) {
+    const std::string compressed = name_ + ".gz";
+    const bool plain = std::filesystem::is_regular_file(path);
+    if (plain && std::filesystem::is_regular_file(compressed))
+        throw InputError(name_, 0, "",
+                         "both " + path.filename().string() + " and " + path.filename().string() +
+                             ".gz exist: remove the one that is not the result");
     bool ok = false;
-    if (std::filesystem::is_regular_file(path)) {
-        text_ = readPlain(path, ok);
-    } else if (std::filesystem::is_regular_file(path.string() + ".gz")) {
-        name_ += ".gz";
-        text_ = readCompressed(name_, ok);
+    if (plain) {
+        text_ = readPlain(path, maxBytes, ok);
+    } else if (std::filesystem::is_regular_file(compressed)) {
+        name_ = compressed;
+        text_ = readCompressed(name_, maxBytes, ok);
     } else {
         throw InputError(name_, 0, "", "missing file (nor " + name_ + ".gz)");
     }
     if (!ok) throw InputError(name_, 0, "", "cannot read the file");
+    if (text_.size() > maxBytes)
+        throw InputError(name_, 0, "",
+                         std::string(plain ? "holds" : "inflates to") + " more than " +
+                             std::to_string(maxBytes) + " bytes, " + why);
 
     // The header through the dictionary parser: FoamFile { ... } holds no nested braces.
     if (word() != "FoamFile") fail("expected the FoamFile { ... } header");

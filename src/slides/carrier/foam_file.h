@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,8 +23,11 @@ namespace slides {
 
 class FoamFile {
 public:
-    /// Reads path, or path + ".gz" when only that exists; InputError if neither can be read.
-    explicit FoamFile(const std::filesystem::path& path);
+    /// Reads path, or path + ".gz" when only that exists; InputError if neither can be read,
+    /// if both exist, or if the (inflated) file holds more than maxBytes, why says what bounds it.
+    explicit FoamFile(const std::filesystem::path& path,
+                      std::size_t maxBytes = std::numeric_limits<std::size_t>::max(),
+                      const std::string& why = "");
 
     /// Whether path or path + ".gz" exists.
     static bool exists(const std::filesystem::path& path);

@@ -36,6 +36,8 @@ FoamLocator::FoamLocator(const FoamMesh& mesh) : mesh_(mesh) {
                           bins_[axis] - 1);
     };
     std::vector<std::array<int, 6>> ranges(mesh.cellCount);
+    cellLow_.resize(mesh.cellCount);
+    cellHigh_.resize(mesh.cellCount);
     std::vector<int> count(static_cast<std::size_t>(bins_[0]) * bins_[1] * bins_[2] + 1, 0);
     for (int pass = 0; pass < 2; ++pass) {
         for (int c = 0; c < mesh.cellCount; ++c) {
@@ -51,6 +53,9 @@ FoamLocator::FoamLocator(const FoamMesh& mesh) : mesh_(mesh) {
                     range[axis] = binOf(low, axis);
                     range[3 + axis] = binOf(high, axis);
                 }
+                const Vec3 slack = 1e-8 * (high - low); // weights ≥ −tolerance reach outside
+                cellLow_[c] = low - slack;
+                cellHigh_[c] = high + slack;
             }
             for (int i = range[0]; i <= range[3]; ++i)
                 for (int j = range[1]; j <= range[4]; ++j)
@@ -104,15 +109,75 @@ TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
             std::clamp(static_cast<int>((point[axis] - gridOrigin_[axis]) / binSize_[axis]), 0,
                        bins_[axis] - 1);
     const int bin = (index[0] * bins_[1] + index[1]) * bins_[2] + index[2];
-    for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k)
-        if (auto found = locateInCell(point, binCells_[k])) return *found;
+    // Walk from the bin's cell whose centre is nearest: the point is a cell or two away. Under
+    // a graded mesh a bin holds up to ~100 cells, and a distance is far cheaper than a cell's
+    // tetrahedra.
+    int nearest = -1;
+    double nearestDistance = INFINITY;
+    for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k) {
+        const double distance = (mesh_.cellCentres[binCells_[k]] - point).squaredNorm();
+        if (distance < nearestDistance) {
+            nearestDistance = distance;
+            nearest = binCells_[k];
+        }
+    }
+    if (nearest < 0) return outside;
+    int boundaryFace = -1;
+    if (const TetLocation walked = walk(point, nearest, boundaryFace); walked.found())
+        return walked;
+    // The walk left through the boundary (the point is outside, or beyond a concave part of
+    // it) or was lost: test the bin's cells whose boxes hold the point.
+    for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k) {
+        const int cell = binCells_[k];
+        if ((point.array() < cellLow_[cell].array()).any() ||
+            (point.array() > cellHigh_[cell].array()).any())
+            continue;
+        if (auto found = locateInCell(point, cell)) return *found;
+    }
     return outside;
 }
 
 TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
     if (startCell < 0 || startCell >= mesh_.cellCount) return locateGlobally(point);
+    int boundaryFace = -1;
+    if (const TetLocation walked = walk(point, startCell, boundaryFace); walked.found())
+        return walked;
+    TetLocation searched = locateGlobally(point);
+    if (!searched.found() && boundaryFace >= 0) searched.exitPatch = mesh_.facePatch[boundaryFace];
+    return searched;
+}
+
+void FoamLocator::startTetrahedron(const Vec3& point, int cell, int& face, int& edge) const {
+    // The face whose point-average lies most in the point's direction from the cell centre,
+    // then the face point most in its direction from that average: usually the tetrahedron
+    // holding the point or its neighbour, so the walk takes a step or none.
+    const Vec3& centre = mesh_.cellCentres[cell];
+    const Vec3 towards = point - centre;
+    double best = -INFINITY;
+    for (const int f : mesh_.facesOf(cell)) {
+        const Vec3 spoke = faceMidpoints_[f] - centre;
+        const double reach = towards.dot(spoke) / spoke.squaredNorm();
+        if (reach > best) {
+            best = reach;
+            face = f;
+        }
+    }
+    const auto ring = mesh_.pointsOf(face);
+    const Vec3 across = point - faceMidpoints_[face];
+    best = -INFINITY;
+    for (int j = 0; j < static_cast<int>(ring.size()); ++j) {
+        const double reach = across.dot(mesh_.points[ring[j]] - faceMidpoints_[face]);
+        if (reach > best) {
+            best = reach;
+            edge = j;
+        }
+    }
+}
+
+TetLocation FoamLocator::walk(const Vec3& point, int startCell, int& boundaryFace) const {
     int cell = startCell, face = mesh_.facesOf(cell)[0], edge = 0;
-    // A walk longer than this is cycling on a badly shaped mesh: search instead.
+    startTetrahedron(point, cell, face, edge);
+    // A walk longer than this is cycling on a badly shaped mesh: lost.
     const int maximumSteps = 1000;
     for (int step = 0; step < maximumSteps; ++step) {
         const auto weights = barycentricWeights(vertices(cell, face, edge), point);
@@ -125,9 +190,8 @@ TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
         case 0: { // across the mesh face into the next cell
             const int next = mesh_.across(face, cell);
             if (next < 0) {
-                TetLocation searched = locateGlobally(point);
-                if (!searched.found()) searched.exitPatch = mesh_.facePatch[face];
-                return searched;
+                boundaryFace = face;
+                return {};
             }
             cell = next;
             break;
@@ -149,14 +213,14 @@ TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
                 }
                 if (moved) break;
             }
-            if (!moved) return locateGlobally(point); // an open cell: let the search decide
+            if (!moved) return {}; // an open cell: lost
             break;
         }
         case 2: edge = (edge + 1) % n; break;      // across (centre, midpoint, p_edge+1)
         default: edge = (edge + n - 1) % n; break; // across (centre, midpoint, p_edge)
         }
     }
-    return locateGlobally(point);
+    return {};
 }
 
 } // namespace slides

@@ -4,9 +4,11 @@
 // points), as OpenFOAM's tetDecomposition splits it about the cell centre; neighbouring cells
 // share the face triangles, so the tetrahedra tile the mesh. locate() walks from a start cell
 // across the tetrahedron face opposite the most negative barycentric weight (a visibility
-// walk: O(1) per particle step when the start is the particle's previous cell); without a start,
-// or when the walk reaches the boundary, a uniform bin grid over the cells' bounding boxes
-// finds the cell. A point in no cell is outside, with the patch the walk left through.
+// walk: O(1) per particle step when the start is the particle's previous cell, starting in the
+// tetrahedron that faces the point); without a start, or when the walk reaches the boundary, a
+// uniform bin grid over the cells' bounding boxes gives the cell with the nearest centre to walk
+// from, and when that walk leaves the mesh (a concave boundary) the bin's cells whose boxes hold
+// the point are tested. A point in no cell is outside, with the patch the walk left through.
 //
 //     FoamLocator locator(mesh);  TetLocation at = locator.locate(x, previousCell);
 #pragma once
@@ -37,7 +39,8 @@ public:
 
     /// The location of point, walking from startCell (a global search when startCell < 0).
     TetLocation locate(const Vec3& point, int startCell) const;
-    /// The location of point by the bin grid (first cell that holds it), or outside.
+    /// The location of point by the bin grid (a walk from the bin's cell with the nearest
+    /// centre; else the first of its cells that holds it), or outside.
     TetLocation locateGlobally(const Vec3& point) const;
     /// The location of point within cell, if the cell holds it (weights ≥ −tolerance).
     std::optional<TetLocation> locateInCell(const Vec3& point, int cell) const;
@@ -50,6 +53,12 @@ public:
     static constexpr double tolerance = 1e-10;
 
 private:
+    /// The visibility walk from startCell: the location holding point, or not found with
+    /// boundaryFace the boundary face it reached (−1 when it was lost: a cycle, an open cell).
+    TetLocation walk(const Vec3& point, int startCell, int& boundaryFace) const;
+    /// The tetrahedron of cell facing point from the cell centre, where a walk starts.
+    void startTetrahedron(const Vec3& point, int cell, int& face, int& edge) const;
+
     const FoamMesh& mesh_;
     std::vector<Vec3> faceMidpoints_; ///< point average of each face
     // Bin grid: cells whose bounding box overlaps bin b are binCells[binOffsets[b] ..].
@@ -58,6 +67,7 @@ private:
     std::array<int, 3> bins_{1, 1, 1};
     std::vector<int> binOffsets_;
     std::vector<int> binCells_;
+    std::vector<Vec3> cellLow_, cellHigh_; ///< each cell's bounding box, with slack
 };
 
 /// Barycentric weights of point in the tetrahedron with the given vertices.

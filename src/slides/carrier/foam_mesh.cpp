@@ -4,7 +4,9 @@
 #include "slides/core/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace slides {
 
@@ -56,6 +58,35 @@ std::vector<int> toInt(const std::vector<std::int64_t>& values, const FoamFile& 
         if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
             in.fail("label " + std::to_string(value) + " out of range");
     return {values.begin(), values.end()};
+}
+
+/// InputError when a cell is inverted or tangled: a tetrahedron of the decomposition the
+/// locator walks (cell centre, face point-average, two consecutive face points) with negative
+/// volume, beyond round-off of the cell's volume. A point in such a cell is found in no cell, or
+/// in two, and interpolation weights there are meaningless.
+void requireUntangledCells(const FoamMesh& mesh, const std::filesystem::path& directory) {
+    for (int c = 0; c < mesh.cellCount; ++c) {
+        const double roundOff = 1e-10 * std::abs(mesh.cellVolumes[c]);
+        for (const int f : mesh.facesOf(c)) {
+            const auto ring = mesh.pointsOf(f);
+            Vec3 midpoint = Vec3::Zero();
+            for (const int p : ring) midpoint += mesh.points[p];
+            midpoint /= static_cast<double>(ring.size());
+            const double outward = mesh.owner[f] == c ? 1.0 : -1.0;
+            for (std::size_t e = 0; e < ring.size(); ++e) {
+                const Vec3& a = mesh.points[ring[e]];
+                const Vec3& b = mesh.points[ring[(e + 1) % ring.size()]];
+                const double volume =
+                    outward *
+                    (midpoint - mesh.cellCentres[c]).dot((a - midpoint).cross(b - midpoint)) / 6;
+                if (mesh.cellVolumes[c] > 0 && volume >= -roundOff) continue;
+                std::ostringstream what;
+                what << "cell " << c << " is inverted or tangled: volume " << mesh.cellVolumes[c]
+                     << " m³, its tetrahedron on face " << f << " has volume " << volume << " m³";
+                throw InputError(directory.string(), 0, "", what.str());
+            }
+        }
+    }
 }
 
 } // namespace
@@ -124,6 +155,7 @@ FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {
                          "patches end at face " + std::to_string(expectedStart) +
                              " but the mesh has " + std::to_string(faceCount) + " faces");
     mesh.computeGeometry();
+    requireUntangledCells(mesh, dir);
     return mesh;
 }
 

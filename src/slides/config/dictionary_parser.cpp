@@ -4,6 +4,8 @@
 #include "slides/core/error.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -23,14 +25,18 @@ using dictionary_syntax::Token;
 namespace {
 
 constexpr std::size_t maxIncludeDepth = 32;
-/// Guards N{value} against typos such as 1000000000{0}.
-constexpr double maxUniformListSize = 1e7;
+/// OpenFOAM dictionaries nest a few levels; the parser recurses once per level.
+constexpr int maxNesting = 64;
+/// A case dictionary is a few kilobytes; these bound the memory a hostile one can take (a value
+/// is about 100 bytes in memory), N{value} typos such as 1000000000{0} included.
+constexpr std::uintmax_t maxFileBytes = std::uintmax_t{16} << 20;
+constexpr std::size_t maxValues = 1'000'000;
 
 /// The file's text, or nothing with the reason in why.
 std::optional<std::string> readText(const std::filesystem::path& file, std::string& why) {
     std::error_code error;
     if (!std::filesystem::exists(file, error)) {
-        why = "no such file";
+        why = error.value() == ELOOP ? "a loop of symbolic links" : "no such file";
         return std::nullopt;
     }
     if (std::filesystem::is_directory(file, error)) {
@@ -40,6 +46,12 @@ std::optional<std::string> readText(const std::filesystem::path& file, std::stri
     if (!std::filesystem::is_regular_file(file, error)) {
         // A device or pipe (such as /dev/zero) could be read forever.
         why = "not a regular file (a device, pipe or socket)";
+        return std::nullopt;
+    }
+    if (const auto bytes = std::filesystem::file_size(file, error);
+        !error && bytes > maxFileBytes) {
+        why = std::to_string(bytes) + " bytes, more than the " + std::to_string(maxFileBytes) +
+              " of a case dictionary";
         return std::nullopt;
     }
     std::ifstream in(file, std::ios::binary);
@@ -151,11 +163,57 @@ private:
 
     std::shared_ptr<const Dictionary> parseSubDictionary(Lexer& lexer, const Token& open,
                                                          const std::string& path) {
+        const Nested nested(*this, lexer, open, path);
         std::shared_ptr<Dictionary> child(new Dictionary(lexer.file(), path, open.line));
         scopes_.push_back(child.get());
         parseEntries(lexer, *child, open.line);
         scopes_.pop_back();
         return child;
+    }
+
+    /// One more level of '{' or '(' while it lives; too many end in an InputError, not in a
+    /// stack overflow.
+    class Nested {
+    public:
+        Nested(DictionaryParser& parser, const Lexer& lexer, const Token& open,
+               const std::string& key)
+            : parser_(parser) {
+            if (++parser_.nesting_ > maxNesting)
+                fail(lexer, open.line, key,
+                     "'" + open.text + "' nested more than " + std::to_string(maxNesting) +
+                         " deep");
+        }
+        ~Nested() { --parser_.nesting_; }
+        Nested(const Nested&) = delete;
+        Nested& operator=(const Nested&) = delete;
+
+    private:
+        DictionaryParser& parser_;
+    };
+
+    /// Counts values the dictionary will hold; more than maxValues is an InputError.
+    void addValues(const Lexer& lexer, int line, const std::string& key, double count) {
+        values_ += count;
+        if (values_ > static_cast<double>(maxValues))
+            fail(lexer, line, key,
+                 "more than " + std::to_string(maxValues) + " values in the dictionary");
+    }
+
+    static std::size_t valueCount(const DictItem& item) {
+        std::size_t count = 1;
+        for (const DictItem& element : item.list_) count += valueCount(element);
+        if (item.dictionary_) count += valueCount(*item.dictionary_);
+        return count;
+    }
+
+    static std::size_t valueCount(const Dictionary& dictionary) {
+        std::size_t count = 0;
+        for (const DictEntry& entry : dictionary.entries_) {
+            count += 1;
+            for (const DictItem& item : entry.items) count += valueCount(item);
+            if (entry.dictionary) count += valueCount(*entry.dictionary);
+        }
+        return count;
     }
 
     /// The values of `keyword values... ;` up to and including the ';'.
@@ -206,6 +264,7 @@ private:
     /// Appends the item(s) that token starts: one value, a list, or a $reference's values.
     void parseItem(Lexer& lexer, const Token& token, std::vector<DictItem>& items, DictEntry& entry,
                    const std::string& key, bool inList) {
+        addValues(lexer, token.line, key, 1);
         switch (token.kind) {
         case Token::Kind::number:
             if (token.integer && token.number >= 0) {
@@ -254,6 +313,7 @@ private:
 
     std::vector<DictItem> parseList(Lexer& lexer, const Token& open, DictEntry& entry,
                                     const std::string& key) {
+        const Nested nested(*this, lexer, open, key);
         std::vector<DictItem> elements;
         while (true) {
             const Token token = take(lexer, key);
@@ -287,10 +347,7 @@ private:
     DictItem uniformList(Lexer& lexer, const Token& size, DictEntry& entry,
                          const std::string& key) {
         const Token open = take(lexer, key);
-        if (size.number > maxUniformListSize)
-            fail(lexer, size.line, key,
-                 "uniform list size " + size.text + " is larger than " +
-                     formatNumber(maxUniformListSize));
+        addValues(lexer, size.line, key, size.number);
         std::vector<DictItem> value;
         const Token first = take(lexer, key);
         if (!first.is('}')) parseItem(lexer, first, value, entry, key, true);
@@ -325,6 +382,9 @@ private:
     void expandReference(Lexer& lexer, const Token& reference, std::vector<DictItem>& items,
                          DictEntry& entry, const std::string& key, bool inList) {
         const DictEntry& referenced = resolve(lexer, reference, key);
+        addValues(lexer, reference.line, key,
+                  static_cast<double>(referenced.isDict() ? valueCount(*referenced.dictionary)
+                                                          : valueCount(referenced.items)));
         if (referenced.isDict()) {
             items.push_back(DictItem::makeDictionary(
                 rebased(*referenced.dictionary, key, reference.line), reference.line));
@@ -354,6 +414,7 @@ private:
                      "value write 'keyword $" +
                      reference.text + ";'");
         if (peek(lexer, into.path()).is(';')) take(lexer, into.path());
+        addValues(lexer, reference.line, into.path(), static_cast<double>(valueCount(*source)));
         for (DictEntry entry : source->entries_) {
             rebase(entry, into.keyPath(entry.keyword));
             addEntry(into, std::move(entry));
@@ -497,7 +558,15 @@ private:
         for (DictItem& element : item.list_) restamp(element, line);
     }
 
+    static std::size_t valueCount(const std::vector<DictItem>& items) {
+        std::size_t count = 0;
+        for (const DictItem& item : items) count += valueCount(item);
+        return count;
+    }
+
     Dictionary& top_;
+    int nesting_ = 0;   ///< '{' and '(' open around the token being read
+    double values_ = 0; ///< values read or copied so far
     std::vector<const Dictionary*> scopes_;
     std::vector<std::filesystem::path> includeChain_; ///< files being read, for loop detection
     std::size_t includeDepth_ = 0;

@@ -1,7 +1,9 @@
 // Error: the one typed error of the library; only the command line turns it into exit status 2.
 //
 // An input error carries where it came from: file, line and key, so a user finds the bad entry
-// at once. Internal failures (broken invariants) are ordinary std::logic_error / runtime_error.
+// at once. Its message shows every byte: control bytes, invalid UTF-8 and invisible characters
+// (a byte-order mark) are escaped as \xNN or \uNNNN. Internal failures (broken invariants) are
+// ordinary std::logic_error / runtime_error.
 #pragma once
 
 #include <stdexcept>

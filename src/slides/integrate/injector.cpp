@@ -70,7 +70,18 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         randomVelocities_[k] = scene_.injection.crossSpanSpeed *
                                (std::cos(direction) * across + std::sin(direction) * other);
     }
-    carrier.sample(positions_, time, CarrierNeeds{}, gas_);
+    // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
+    // step walks from there instead of searching again.
+    const bool keepsLocations = carrier.keepsLocations();
+    if (keepsLocations) {
+        cloud.carrierLocation.resize(cloud.size(), -1);
+        cloud.carrierLocation.resize(cloud.size() + count, -1);
+        carrier.sampleFrom(positions_,
+                           std::span(cloud.carrierLocation).subspan(cloud.size(), count), time,
+                           CarrierNeeds{}, gas_);
+    } else {
+        carrier.sample(positions_, time, CarrierNeeds{}, gas_);
+    }
     for (std::size_t k = 0; k < count; ++k) {
         const auto id = static_cast<ParticleId>(first) + k;
         cloud.add(id, positions_[k], gas_.velocity[k] + randomVelocities_[k],

@@ -1,6 +1,7 @@
 #include "slides/integrate/stepper.h"
 
 #include "slides/core/parallel.h"
+#include "slides/integrate/relaxation_batch.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
 
@@ -126,7 +127,7 @@ void Stepper::step() {
 
 namespace {
 
-/// One step of `scheme` (relaxExactly or advanceExplicitly) over fraction × h_i for every
+/// One step of `scheme` (advanceExplicitly) over fraction × h_i for every
 /// particle i with gas velocity u, the response time τ from the slip u − w (w = v, or the
 /// midpoint velocity).
 template <typename Scheme>
@@ -142,8 +143,7 @@ void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
     }
 }
 
-// The schemes as function objects, so advanceEach inlines them into its loop.
-constexpr auto exactRelaxation = [](auto&&... step) { relaxExactly(step...); };
+// The scheme as a function object, so advanceEach inlines it into its loop.
 constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); };
 
 } // namespace
@@ -174,21 +174,20 @@ void Stepper::advance(double h) {
         advanceEach(explicitStep, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
         break;
     case Integrator::exponentialEuler:
-        advanceEach(exactRelaxation, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
+        relaxBatchExactly({x, v, x, v, u, v, radius, stepLengths_}, drag_, a, 1.0);
         break;
     case Integrator::exponentialMidpoint: {
-        // Exponential midpoint rule: predict to t + h/2 with the state at t, then take the
-        // whole step with u and τ frozen at their midpoint values (second order).
-        auto& xm = midpointPositions_;
-        auto& vm = midpointVelocities_;
-        xm = x;
-        vm = v;
-        advanceEach(exactRelaxation, xm, vm, u, v, radius, drag_, a, stepLengths_, 0.5);
+        // Exponential midpoint rule: predict to t + h/2 with the state at t (into the cloud's
+        // arrays), then take the whole step from the state at t with u and τ frozen at their
+        // midpoint values (second order).
+        const auto& x0 = startPositions_;
+        const auto& v0 = startVelocities_;
+        relaxBatchExactly({x0, v0, x, v, u, v0, radius, stepLengths_}, drag_, a, 0.5);
         midpointLocations_ = cloud_.carrierLocation;
-        sampleCarrier(xm, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
+        sampleCarrier(x, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
         dispersion_.addTo(midpointGas_.velocity);
-        advanceEach(exactRelaxation, x, v, midpointGas_.velocity, vm, radius, drag_, a,
-                    stepLengths_, 1.0);
+        relaxBatchExactly({x0, v0, x, v, midpointGas_.velocity, v, radius, stepLengths_}, drag_, a,
+                          1.0);
         break;
     }
     }
@@ -235,8 +234,22 @@ void Stepper::meetSurfaces(double h) {
         if (!attention) return;
     }
     surfaces_.indexDeposit();
+    // In parallel, the particles that only fly on: finite, in the box and the mesh, their path
+    // touching no surface; the rest are met one by one in order (arrivals, deposit, removal).
+    const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
+    std::vector<std::uint8_t> fliesOn(cloud_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t n = 0; n < count; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        const Vec3& x = cloud_.position[i];
+        fliesOn[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
+                     insideBox(scene_.domain, x) &&
+                     (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
+                     !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]);
+    }
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
+        if (fliesOn[i]) continue;
         const Vec3& x = cloud_.position[i];
         const Vec3& v = cloud_.velocity[i];
         if (!x.allFinite() || !v.allFinite()) {

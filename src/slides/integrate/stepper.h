@@ -139,8 +139,6 @@ private:
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
     std::vector<double> startTemperatures_; ///< with heat transfer
-    std::vector<Vec3> midpointPositions_;
-    std::vector<Vec3> midpointVelocities_;
     /// A mesh carrier's cells of the midpoints (or of the Maxey–Riley step's predicted ends).
     std::vector<std::int32_t> midpointLocations_;
 };

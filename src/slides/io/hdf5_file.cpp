@@ -5,18 +5,24 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
+#include <cstring>
 
 namespace slides {
 
 namespace {
 
-/// Silences HDF5's automatic error-stack printing once: failures become OutputError here.
-void silenceHdf5Errors() {
-    static const bool silenced = [] {
+/// Before the first HDF5 call: no error-stack printing (failures become OutputError here), and
+/// no library shutdown at exit. A file whose final flush failed (a full disk) stays half closed
+/// in HDF5: closing it again, as that shutdown would, crashes the process (SIGSEGV after the
+/// run's error message). Every handle is closed by its owner, so nothing needs the shutdown.
+void startHdf5() {
+    static const bool started = [] {
+        H5dont_atexit();
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
         return true;
     }();
-    (void)silenced;
+    (void)started;
 }
 
 /// Rows per chunk: about 64 KiB of data, never more than the dataset.
@@ -49,13 +55,13 @@ bool Hdf5Handle::close() {
     case H5I_GENPROP_LST: status = H5Pclose(id_); break;
     default: break;
     }
-    id_ = H5I_INVALID_HID;
+    id_ = H5I_INVALID_HID; // never closed twice: a failed file close leaves HDF5's object broken
     return status >= 0;
 }
 
 Hdf5File::Hdf5File(std::filesystem::path path, Hdf5Access access)
     : path_(std::move(path)), access_(access) {
-    silenceHdf5Errors();
+    startHdf5();
     if (access == Hdf5Access::create) {
         file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
         if (!file_.valid()) fail("cannot create the file");
@@ -241,7 +247,10 @@ void Hdf5File::flush() const {
 }
 
 void Hdf5File::close() {
-    if (!file_.close()) fail("cannot close the file");
+    errno = 0;
+    if (!file_.close())
+        fail(std::string("cannot close the file") +
+             (errno ? std::string(" (") + std::strerror(errno) + ")" : ""));
 }
 
 } // namespace slides

@@ -58,6 +58,19 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
     return result;
 }
 
+bool SurfaceImpacts::mayTouch(const Vec3& start, const Vec3& end, double radius) const {
+    for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
+        const bool touches =
+            walls_[s]
+                ? walls_[s]
+                      ->firstTouch(start, end, radius, [](double, const Vec3&) { return true; })
+                      .has_value()
+                : planeContactFraction(scene_.surfaces[s], start, end, radius).has_value();
+        if (touches) return true;
+    }
+    return deposit_.firstTouch(start, end, radius).has_value();
+}
+
 std::optional<PatchTouch> SurfaceImpacts::overlapWith(std::size_t s, const Vec3& centre,
                                                       double radius) const {
     if (walls_[s])

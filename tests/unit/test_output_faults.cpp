@@ -1,0 +1,79 @@
+// ctest-labels: robustness io
+// Writes that fail: a checkpoint whose final flush meets the end of the space (injected as a
+// file-size limit, which works for any user: writes beyond it fail with EFBIG), and a file whose
+// temporary cannot be created (a name too long for it, which no user can create either). Each
+// ends in one message naming the file, and what was written before stays whole.
+#include "../support/case_runs.h"
+#include "slides/io/atomic_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace slides {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The analytic spray with 500 particles and a small carrier lattice: its checkpoints grow
+/// from 250 kB to 480 kB, and the carrier file stays far below them.
+struct SmallSpray : test::ScratchDirectory {
+    SmallSpray() : test::ScratchDirectory("output-faults") {
+        std::ofstream(path / "constant" / "slidesProperties")
+            << "#include \"" << (test::defaultCase / "constant" / "slidesProperties").string()
+            << "\"\nparticles { count 500; }\noutput { carrierResolution (8 8 8); }\n";
+    }
+};
+
+// The checkpoint after the first ones cannot be closed (HDF5 flushes it on closing, past the
+// 350 KiB limit): the run printed its error and then died of SIGSEGV in HDF5's shutdown, which
+// closed the half-closed file a second time.
+TEST(OutputFaults, CheckpointThatCannotBeFlushedEndsInExitTwoKeepingThePreviousOne) {
+    const SmallSpray spray;
+    const fs::path out = spray.path / "out";
+    const fs::path log = spray.path / "log";
+    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 350; exec " +
+                                std::string(SLIDES_TRACK_EXE) + " " + spray.path.string() +
+                                " --output " + out.string() +
+                                " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    const std::string text = test::slurp(log);
+    const std::string error = text.substr(text.rfind("\nslides-track: error: ") + 1);
+    EXPECT_TRUE(error.starts_with("slides-track: error: cannot write " +
+                                  (out / "checkpoint.h5.tmp-").string()))
+        << error;
+    EXPECT_TRUE(error.ends_with(": cannot close the file (File too large)\n")) << error;
+    for (const auto& entry : fs::directory_iterator(out))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+            << entry.path();
+    // The previous checkpoint is whole: the run restarts from it and ends.
+    EXPECT_EQ(
+        test::runCli(spray.path.string() + " --output " + out.string() + " --restart --threads 1",
+                     spray.path / "restart.log"),
+        0)
+        << test::slurp(spray.path / "restart.log");
+    EXPECT_TRUE(fs::exists(out / "particles.h5"));
+}
+
+// The temporary's name (target + ".tmp-PID") is longer than a file name may be: even root cannot
+// create it. The message names the target with the system's reason; the target keeps its text.
+TEST(OutputFaults, UncreatableTemporaryKeepsTheOriginal) {
+    const test::ScratchDirectory directory("uncreatable-temporary");
+    const fs::path target = directory.path / (std::string(250, 'p') + ".pvd");
+    std::ofstream(target) << "original";
+    try {
+        writeTextAtomically(target, "new");
+        ADD_FAILURE() << "no OutputError";
+    } catch (const OutputError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "cannot write " + target.string() + ": File name too long");
+    }
+    EXPECT_EQ(test::slurp(target), "original");
+}
+
+} // namespace
+} // namespace slides
