@@ -11,6 +11,7 @@
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
+#include "slides/core/thread_waits.h"
 #include "slides/integrate/stepper.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
@@ -183,6 +184,7 @@ int run(const Options& options) {
 } // namespace
 
 int main(int argc, char** argv) {
+    slides::sleepWhileWaitingForWork(argv);
     CLI::App app{"slides-track: Lagrangian particle tracking in a carrier-gas jet.\n"
                  "CASE holds constant/slidesProperties; results go to CASE/slides/."};
     Options options;
