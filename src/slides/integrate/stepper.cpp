@@ -101,8 +101,10 @@ void Stepper::step() {
         cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
         softSpheres_->halfKick(cloud_, stepLengths_);
     }
-    // The paths' starts, for impulse collisions, heating and meeting surfaces at the touch.
-    if (collisions_ || heating_.on() || surfaces_.meetsAtTouch()) {
+    // The paths' starts, for the stream step through a gas (the midpoint rule), impulse
+    // collisions, heating and meeting surfaces at the touch.
+    if (scene_.carrier.type != CarrierType::none || collisions_ || heating_.on() ||
+        surfaces_.meetsAtTouch()) {
         startPositions_ = cloud_.position;
         startVelocities_ = cloud_.velocity;
     }
@@ -245,7 +247,8 @@ void Stepper::meetSurfaces(double h) {
         fliesOn[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
                      insideBox(scene_.domain, x) &&
                      (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
-                     !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]);
+                     (!surfaces_.meetsAtTouch() ||
+                      !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]));
     }
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
