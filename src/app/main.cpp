@@ -12,6 +12,7 @@
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
 #include "slides/core/thread_waits.h"
+#include "slides/integrate/mean_response_time.h"
 #include "slides/integrate/stepper.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
@@ -68,8 +69,7 @@ void applyOverrides(const Options& options, slides::Scene& scene) {
 void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier,
                  const slides::SceneAnalysis& analysis, int threads) {
     const double meanRadius = scene.particles.radius.meanRadius();
-    const double responseTime = slides::stokesResponseTime(
-        scene.particles.density, meanRadius, scene.fluid.density, scene.fluid.kinematicViscosity);
+    const double responseTime = slides::meanStokesResponseTime(scene.particles, scene.fluid);
     std::printf("slides-track %s: case %s\n", SLIDES_VERSION, scene.caseDirectory.c_str());
     std::printf("  carrier    %s\n", carrier.describe().c_str());
     std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "

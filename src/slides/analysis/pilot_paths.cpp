@@ -1,5 +1,6 @@
 #include "slides/analysis/pilot_paths.h"
 
+#include "slides/analysis/physics_terms.h"
 #include "slides/integrate/stepper.h"
 
 #include <algorithm>

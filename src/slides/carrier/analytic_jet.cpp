@@ -1,6 +1,8 @@
 #include "slides/carrier/analytic_jet.h"
 
 #include "slides/carrier/bickley_batch.h"
+#include "slides/carrier/carrier_settings.h"
+#include "slides/core/name_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -109,7 +111,7 @@ double AnalyticJet::halfWidth(double axialDistance) const {
 std::string AnalyticJet::describe() const {
     std::ostringstream text;
     text.precision(4);
-    text << "analyticJet (" << jetGeometryName(frame_.geometry())
+    text << "analyticJet (" << nameOf(jetGeometryNames(), frame_.geometry())
          << " sech², Eq. 5.10/5.11): C1 = " << profile_.C1 << " m^(4/3)/s, C2 = " << profile_.C2
          << " m^(5/3)/s, C3 = " << profile_.C3 << " m^(-1/3), K = " << momentumFlux()
          << " m^3/s^2, virtual origin " << frame_.virtualOrigin() << " m, core "

@@ -16,10 +16,6 @@ void require(bool condition, const std::string& message) {
 
 } // namespace
 
-const char* jetGeometryName(JetGeometry geometry) {
-    return geometry == JetGeometry::planar ? "planar" : "axisymmetric";
-}
-
 JetFrame::JetFrame(const JetNozzle& nozzle, JetGeometry geometry, double coreLength,
                    double virtualOrigin)
     : nozzle_(nozzle), geometry_(geometry), coreLength_(coreLength), virtualOrigin_(virtualOrigin) {

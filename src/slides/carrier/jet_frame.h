@@ -46,8 +46,7 @@ struct JetNozzle {
 /// How the 2-D profile is extruded: along e_a × e_y (planar) or rotated about the axis.
 enum class JetGeometry { planar, axisymmetric };
 
-/// "planar" or "axisymmetric".
-const char* jetGeometryName(JetGeometry geometry);
+// Its names: jetGeometryNames() (carrier/carrier_settings.h).
 
 /// A self-similar profile and its first derivatives at (s, y); y ≥ 0 for axisymmetric use.
 struct ProfileSample {

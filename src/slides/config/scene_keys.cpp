@@ -1,7 +1,9 @@
 #include "slides/config/scene_keys.h"
 
+#include "slides/carrier/carrier_settings.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/collide/collision_settings.h"
+#include "slides/integrate/injection_settings.h"
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
 #include "slides/physics/adhesion.h"
@@ -38,14 +40,14 @@ std::vector<KeyDeclaration> declareKeys() {
     std::vector<KeyDeclaration> keys = {
         {"carrier", K::dictionary, "-", "", {}, R::any, "The carrier gas field."},
         {"carrier.type", K::word, "-", "analyticJet",
-         {"analyticJet", "roundLaminarJet", "foamField", "none"}, R::any,
+         namesOf(carrierTypeNames()), R::any,
          "analyticJet: sech² jet of Eq. 5.10/5.11; roundLaminarJet: Schlichting's exact round "
          "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present); "
          "none: no gas (a DEM scene: gravity and contacts only, time.dt given)."},
         {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
         {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
-         {"planar", "axisymmetric"}, R::any,
+         namesOf(jetGeometryNames()), R::any,
          "planar: Bickley's plane jet across nozzle.crossSpanDirection; axisymmetric: the same "
          "profile with y replaced by the radius (the reference's 3-D use)."},
         {"carrier.analyticJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
@@ -83,7 +85,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.turbulence", K::dictionary, "-", "-", {}, R::any,
          "Turbulence of the analytic jets, k = 3/2 (I U)², ε = 0.09^(3/4) k^(3/2)/ℓ "
          "(carrier/jet_scalars.h); without it they are laminar (k = ε = 0)."},
-        {"carrier.turbulence.scaling", K::word, "-", "uniform", {"uniform", "jetLocal"}, R::any,
+        {"carrier.turbulence.scaling", K::word, "-", "uniform", namesOf(turbulenceScalingNames()), R::any,
          "uniform: U = nozzleVelocity, ℓ = lengthScale everywhere; jetLocal: U = local "
          "centreline velocity, ℓ = lengthScaleToHalfWidth × local half-width."},
         {"carrier.turbulence.intensity", K::scalar, "-", "", {}, R::positive,
@@ -122,7 +124,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"particles.radiusDistribution", K::dictionary, "-", "", {}, R::any,
          "Particle radius distribution."},
         {"particles.radiusDistribution.type", K::word, "-", "fixed",
-         {"fixed", "normal", "logNormal"}, R::any,
+         namesOf(radiusDistributionNames()), R::any,
          "fixed: value; normal: mean, standardDeviation; logNormal: median, "
          "geometricStandardDeviation."},
         {"particles.radiusDistribution.value", K::scalar, "m", "-", {}, R::positive,
@@ -160,7 +162,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injection", K::dictionary, "-", "", {}, R::any,
          "Particles start on the nozzle disc with the local gas velocity plus a random "
          "cross-span velocity."},
-        {"injection.mode", K::word, "-", "rate", {"rate", "allAtStart", "lattice"}, R::any,
+        {"injection.mode", K::word, "-", "rate", namesOf(injectionModeNames()), R::any,
          "rate: one particle every 1/rate seconds; allAtStart: all at t = 0; lattice: all at "
          "t = 0 on the sites of a simple cubic lattice (latticeCoeffs)."},
         {"injection.rate", K::scalar, "1/s", "-", {}, R::positive,

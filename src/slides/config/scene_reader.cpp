@@ -1,5 +1,6 @@
 #include "slides/config/scene_reader.h"
 
+#include "slides/analysis/physics_terms.h"
 #include "slides/carrier/foam_mesh.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_keys.h"
@@ -249,23 +250,20 @@ private:
 RadiusDistribution readRadiusDistribution(const KeyReader& keys) {
     const std::string base = "particles.radiusDistribution.";
     RadiusDistribution radius;
-    const std::string type = keys.word(base + "type");
+    radius.kind = *valueNamed(radiusDistributionNames(), keys.word(base + "type"));
     radius.minimum = keys.scalar(base + "minimum");
     radius.maximum = keys.optionalScalar(base + "maximum").value_or(INFINITY);
-    if (type == "fixed") {
+    if (radius.kind == RadiusDistributionKind::fixed) {
         keys.require(base + "value", "for type fixed");
-        radius.kind = RadiusDistributionKind::fixed;
         radius.value = keys.scalar(base + "value");
-    } else if (type == "normal") {
+    } else if (radius.kind == RadiusDistributionKind::normal) {
         keys.require(base + "mean", "for type normal");
         keys.require(base + "standardDeviation", "for type normal");
-        radius.kind = RadiusDistributionKind::normal;
         radius.mean = keys.scalar(base + "mean");
         radius.standardDeviation = keys.scalar(base + "standardDeviation");
     } else {
         keys.require(base + "median", "for type logNormal");
         keys.require(base + "geometricStandardDeviation", "for type logNormal");
-        radius.kind = RadiusDistributionKind::logNormal;
         radius.median = keys.scalar(base + "median");
         radius.geometricStandardDeviation = keys.scalar(base + "geometricStandardDeviation");
     }
@@ -292,12 +290,12 @@ std::optional<JetTurbulence> readJetTurbulence(const KeyReader& keys) {
     if (!keys.has("carrier.turbulence")) return std::nullopt;
     JetTurbulence turbulence;
     turbulence.intensity = keys.scalar(base + "intensity");
-    if (keys.word(base + "scaling") == "uniform") {
+    turbulence.scaling = *valueNamed(turbulenceScalingNames(), keys.word(base + "scaling"));
+    if (turbulence.scaling == TurbulenceScaling::uniform) {
         keys.require(base + "lengthScale", "for scaling uniform");
         turbulence.lengthScale = keys.scalar(base + "lengthScale");
     } else {
         keys.require(base + "lengthScaleToHalfWidth", "for scaling jetLocal");
-        turbulence.scaling = TurbulenceScaling::jetLocal;
         turbulence.lengthScaleToHalfWidth = keys.scalar(base + "lengthScaleToHalfWidth");
     }
     return turbulence;
@@ -508,29 +506,24 @@ std::string readPatchName(const KeyReader& keys, const std::string& base, const 
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     CarrierSettings carrier;
     const std::string type = keys.word("carrier.type");
-    if (type == "none") {
-        carrier.type = CarrierType::none;
-        return carrier;
-    }
+    carrier.type = *valueNamed(carrierTypeNames(), type);
+    if (carrier.type == CarrierType::none) return carrier;
     const std::string coeffs = "carrier." + type + "Coeffs";
-    if (type != "foamField") keys.require(coeffs, "for carrier type " + type);
-    if (type == "foamField") {
-        carrier.type = CarrierType::foamField;
+    if (carrier.type != CarrierType::foamField) keys.require(coeffs, "for carrier type " + type);
+    if (carrier.type == CarrierType::foamField) {
         carrier.foamTime = keys.wordOrNumber(coeffs + ".time");
         carrier.interpolation =
             *valueNamed(foamInterpolationNames(), keys.word(coeffs + ".interpolation"));
         carrier.latticeSpacing = keys.scalar(coeffs + ".latticeSpacing");
         return carrier;
     }
-    carrier.type = type == "analyticJet" ? CarrierType::analyticJet : CarrierType::roundLaminarJet;
     carrier.nozzleVelocity = keys.scalar(coeffs + ".nozzleVelocity");
     carrier.coreLength = keys.scalar(coeffs + ".coreLength");
     carrier.viscosity =
         keys.optionalScalar(coeffs + ".effectiveViscosity").value_or(fluid.kinematicViscosity);
     carrier.turbulence = readJetTurbulence(keys);
     if (carrier.type == CarrierType::analyticJet) {
-        carrier.profile = keys.word(coeffs + ".profile") == "planar" ? JetGeometry::planar
-                                                                     : JetGeometry::axisymmetric;
+        carrier.profile = *valueNamed(jetGeometryNames(), keys.word(coeffs + ".profile"));
         carrier.C1 = keys.optionalScalar(coeffs + ".C1");
         carrier.C2 = keys.optionalScalar(coeffs + ".C2");
         carrier.C3 = keys.optionalScalar(coeffs + ".C3");
@@ -559,18 +552,6 @@ void readDomain(const KeyReader& keys, Scene& scene) {
 }
 
 } // namespace
-
-double RadiusDistribution::meanRadius() const {
-    switch (kind) {
-    case RadiusDistributionKind::fixed: return value;
-    case RadiusDistributionKind::normal: return mean;
-    case RadiusDistributionKind::logNormal: {
-        const double sigma = std::log(geometricStandardDeviation);
-        return median * std::exp(0.5 * sigma * sigma);
-    }
-    }
-    return value;
-}
 
 Scene sceneFromDictionary(const Dictionary& dictionary,
                           const std::filesystem::path& caseDirectory) {
@@ -610,10 +591,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.particles.radius = readRadiusDistribution(keys);
     scene.particles.material = readMaterial(keys, "particles.material");
 
-    const std::string mode = keys.word("injection.mode");
-    scene.injection.mode = mode == "rate"         ? InjectionMode::rate
-                           : mode == "allAtStart" ? InjectionMode::allAtStart
-                                                  : InjectionMode::lattice;
+    scene.injection.mode = *valueNamed(injectionModeNames(), keys.word("injection.mode"));
     if (scene.injection.mode == InjectionMode::rate) {
         keys.require("injection.rate", "for injection mode rate");
         scene.injection.rate = keys.scalar("injection.rate");

@@ -1,6 +1,7 @@
 #include "slides/io/summary.h"
 
 #include "slides/core/name_table.h"
+#include "slides/integrate/mean_response_time.h"
 #include "slides/surfaces/deposit_metrics.h"
 
 #include <cmath>
@@ -76,37 +77,31 @@ nlohmann::json sceneSettings(const Scene& scene) {
                           {"radius", scene.nozzle.radius},
                           {"crossSpanDirection", vec(scene.nozzle.crossSpanDirection)}};
     const CarrierSettings& carrier = scene.carrier;
-    settings["carrier"] = {{"type", carrier.type == CarrierType::analyticJet ? "analyticJet"
-                                    : carrier.type == CarrierType::roundLaminarJet
-                                        ? "roundLaminarJet"
-                                        : "foamField"},
-                           {"profile", jetGeometryName(carrier.profile)},
+    settings["carrier"] = {{"type", nameOf(carrierTypeNames(), carrier.type)},
+                           {"profile", nameOf(jetGeometryNames(), carrier.profile)},
                            {"nozzleVelocity", carrier.nozzleVelocity},
                            {"coreLength", carrier.coreLength},
                            {"viscosity", carrier.viscosity}};
     if (carrier.turbulence)
         settings["carrier"]["turbulence"] = {
-            {"scaling",
-             carrier.turbulence->scaling == TurbulenceScaling::uniform ? "uniform" : "jetLocal"},
+            {"scaling", nameOf(turbulenceScalingNames(), carrier.turbulence->scaling)},
             {"intensity", carrier.turbulence->intensity},
             {"lengthScale", carrier.turbulence->lengthScale},
             {"lengthScaleToHalfWidth", carrier.turbulence->lengthScaleToHalfWidth}};
     const RadiusDistribution& radius = scene.particles.radius;
-    const char* radiusKinds[] = {"fixed", "normal", "logNormal"};
     settings["particles"] = {
         {"count", scene.particles.count},
         {"density", scene.particles.density},
         {"radiusDistribution",
-         {{"type", radiusKinds[static_cast<int>(radius.kind)]},
+         {{"type", nameOf(radiusDistributionNames(), radius.kind)},
           {"meanRadius", radius.meanRadius()},
           {"minimum", radius.minimum},
           {"maximum", std::isfinite(radius.maximum) ? nlohmann::json(radius.maximum) : nullptr}}},
         {"material", material(scene.particles.material)}};
-    settings["injection"] = {
-        {"mode", scene.injection.mode == InjectionMode::rate ? "rate" : "allAtStart"},
-        {"rate", scene.injection.rate},
-        {"crossSpanSpeed", scene.injection.crossSpanSpeed},
-        {"seed", scene.injection.seed}};
+    settings["injection"] = {{"mode", nameOf(injectionModeNames(), scene.injection.mode)},
+                             {"rate", scene.injection.rate},
+                             {"crossSpanSpeed", scene.injection.crossSpanSpeed},
+                             {"seed", scene.injection.seed}};
     settings["physics"] = {
         {"drag", nameOf(dragModelNames(), scene.physics.drag)},
         {"gravity", vec(scene.physics.gravity)},
@@ -217,11 +212,8 @@ nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunM
                      "R_av), x = centre height above the plane"}};
     }
 
-    const double meanRadius = scene.particles.radius.meanRadius();
-    summary["responseTime"] = {
-        {"stokes", stokesResponseTime(scene.particles.density, meanRadius, scene.fluid.density,
-                                      scene.fluid.kinematicViscosity)},
-        {"note", "tau_St = 2 rho_p R^2 / (9 rho_f nu) at the mean radius"}};
+    summary["responseTime"] = {{"stokes", meanStokesResponseTime(scene.particles, scene.fluid)},
+                               {"note", "tau_St = 2 rho_p R^2 / (9 rho_f nu) at the mean radius"}};
     summary["time"] = {{"end", stepper.time()}, {"steps", stepper.steps()}};
     const double particleSteps = static_cast<double>(stepper.particleSteps());
     // Particle-steps per second of the stepping alone (output time is reported beside it).

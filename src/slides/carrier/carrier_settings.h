@@ -1,0 +1,77 @@
+// Carrier settings: the gas (`fluid {}`) and the field that carries the particles (`carrier {}`),
+// with the name tables of the carrier types, jet profiles and turbulence scalings.
+//
+//     fluid   { density 1.2; kinematicViscosity 1.5e-5; temperature 293; }
+//     carrier { type analyticJet; analyticJetCoeffs { profile axisymmetric; nozzleVelocity 50; }
+//               turbulence { scaling jetLocal; intensity 0.1; lengthScaleToHalfWidth 0.2; } }
+//
+// How to add a carrier type: an enumerator, its name in carrierTypeNames(), its key rows in
+// config/scene_keys.cpp and its construction in carrier/make_carrier.cpp.
+#pragma once
+
+#include "slides/carrier/foam_interpolation.h"
+#include "slides/carrier/jet_frame.h"
+#include "slides/carrier/jet_scalars.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace slides {
+
+struct FluidSettings {
+    double density = 0;             ///< ρf [kg/m³]
+    double kinematicViscosity = 0;  ///< ν [m²/s]
+    double temperature = 0;         ///< [K]
+    double thermalConductivity = 0; ///< K_f [W/(m K)], heat transfer
+    double specificHeat = 0;        ///< c_f [J/(kg K)], heat transfer
+};
+
+enum class CarrierType { analyticJet, roundLaminarJet, foamField, none };
+
+struct CarrierTypeName {
+    CarrierType value;
+    std::string_view name;
+};
+
+constexpr std::array<CarrierTypeName, 4> carrierTypeNames() {
+    return {{{CarrierType::analyticJet, "analyticJet"},
+             {CarrierType::roundLaminarJet, "roundLaminarJet"},
+             {CarrierType::foamField, "foamField"},
+             {CarrierType::none, "none"}}};
+}
+
+struct JetGeometryName {
+    JetGeometry value;
+    std::string_view name;
+};
+
+constexpr std::array<JetGeometryName, 2> jetGeometryNames() {
+    return {{{JetGeometry::planar, "planar"}, {JetGeometry::axisymmetric, "axisymmetric"}}};
+}
+
+struct TurbulenceScalingName {
+    TurbulenceScaling value;
+    std::string_view name;
+};
+
+constexpr std::array<TurbulenceScalingName, 2> turbulenceScalingNames() {
+    return {{{TurbulenceScaling::uniform, "uniform"}, {TurbulenceScaling::jetLocal, "jetLocal"}}};
+}
+
+struct CarrierSettings {
+    CarrierType type = CarrierType::analyticJet;
+    JetGeometry profile = JetGeometry::axisymmetric; ///< analyticJet only
+    double nozzleVelocity = 0;                       ///< U0 [m/s]
+    double coreLength = 0;                           ///< unentrained core [m]
+    double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
+    std::optional<double> C1, C2, C3;        ///< Eq. 5.10/5.11 coefficients when given explicitly
+    std::optional<JetTurbulence> turbulence; ///< k, ε of the analytic jets (none: laminar)
+    // foamField only:
+    std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
+    FoamInterpolation interpolation = FoamInterpolation::cellPoint;
+    double latticeSpacing = 0; ///< interpolation lattice: node spacing [m], 0: extent/100
+};
+
+} // namespace slides

@@ -1,0 +1,50 @@
+// Physics settings: the forces and models of the particle equation of motion (`physics {}`),
+// each chosen through its family's name table (physics/drag.h, history_integrator.h, lift.h,
+// dispersion.h, heat_transfer.h); `auto` leaves a term to the scene analysis.
+//
+//     physics { drag haiderLevenspiel; gravity (0 0 -9.81); buoyancy on;
+//               history { model auto; accuracy 1e-3; } addedMass auto; pressureGradient auto;
+//               lift auto; spin auto; dispersion { model auto; } heatTransfer { model auto; }
+//               autoThreshold 0.01; }
+#pragma once
+
+#include "slides/core/vector.h"
+#include "slides/physics/dispersion.h"
+#include "slides/physics/drag.h"
+#include "slides/physics/heat_transfer.h"
+#include "slides/physics/history_integrator.h"
+#include "slides/physics/lift.h"
+#include "slides/physics/physics_term.h"
+
+#include <vector>
+
+namespace slides {
+
+struct PhysicsSettings {
+    DragModel drag = DragModel::haiderLevenspiel;
+    Vec3 gravity = Vec3::Zero(); ///< [m/s²]
+    bool buoyancy = true;
+    // Unsteady terms (integrate/maxey_riley.h); all off by default.
+    HistoryModel history = HistoryModel::none;
+    double historyAccuracy = 1e-3; ///< relative error target of the history kernel's tail
+    bool addedMass = false;
+    bool pressureGradient = false;
+    LiftModel lift = LiftModel::none;
+    bool spin = false;
+    bool spinHistory = false; ///< the unsteady torque of Eq. 3.19 (needs spin)
+    DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
+    DispersionConstants dispersionConstants;
+    HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
+    /// Terms left to the scene analysis (`auto`), off until it turns them on.
+    std::vector<AutomaticTerm> automaticTerms;
+    /// Largest estimated effect of a term that auto turns off (analysis/scene_analysis.h).
+    double autoThreshold = 0.01;
+
+    /// Whether any unsteady term is on: then the Maxey–Riley step replaces the integrator.
+    bool unsteadyForces() const {
+        return history != HistoryModel::none || addedMass || pressureGradient ||
+               lift != LiftModel::none || spin;
+    }
+};
+
+} // namespace slides

@@ -1,0 +1,28 @@
+// Surface settings: one surface of `surfaces {}` — a sink, a wall or a deposition target, a
+// plane of the dictionary or a wall patch of the OpenFOAM mesh (surfaces/patch_wall.h); the
+// interactions' name table is collide/collision_settings.h's surfaceInteractionNames().
+//
+//     surfaces { target { type plane; point (0.06 0 0); normal (-1 0 0); interaction deposit;
+//                         material { bulkModulus 1.6e11; shearModulus 8e10; } } }
+#pragma once
+
+#include "slides/collide/collision_settings.h"
+#include "slides/core/vector.h"
+#include "slides/physics/contact_pair.h"
+
+#include <string>
+
+namespace slides {
+
+struct Surface {
+    std::string name;
+    /// The plane; for a patch, its mean plane (area-weighted centroid and normal), which the
+    /// deposit's metrics and map use (surfaces/patch_wall.h, placePatchSurfaces).
+    Vec3 point = Vec3::Zero();
+    Vec3 normal = Vec3::UnitX(); ///< unit, pointing into the gas side
+    MaterialSettings material;
+    SurfaceInteraction interaction = SurfaceInteraction::absorb;
+    std::string patch; ///< the mesh patch it is; empty for a plane
+};
+
+} // namespace slides

@@ -1,0 +1,74 @@
+// ctest-labels: foundation config
+// summary.json's settings report the dictionary's choices by their names (io/summary.h,
+// sceneSettings): for the default spray case with each carrier type and each injection mode
+// in turn, the reported carrier.type and injection.mode are the dictionary's words. (The
+// summary once reported carrier `none` as "foamField" and injection `lattice` as "allAtStart".)
+#include "slides/config/dictionary.h"
+#include "slides/config/scene_reader.h"
+#include "slides/io/summary.h"
+
+#include "../support/case_runs.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace slides {
+namespace {
+
+/// The settings summary.json reports for the default case with `changes` appended (a repeated
+/// sub-dictionary merges, a repeated keyword replaces).
+nlohmann::json settingsWith(const std::string& changes) {
+    const auto file = test::defaultCase / "constant" / "slidesProperties";
+    const Dictionary dictionary =
+        Dictionary::parseString(test::slurp(file) + "\n" + changes, file.string());
+    return sceneSettings(sceneFromDictionary(dictionary, test::defaultCase));
+}
+
+struct CarrierCase {
+    const char* type;
+    const char* changes;
+};
+
+class SummaryCarrierType : public testing::TestWithParam<CarrierCase> {};
+
+TEST_P(SummaryCarrierType, ReportsTheDictionarysType) {
+    const nlohmann::json settings = settingsWith(GetParam().changes);
+    EXPECT_EQ(settings["carrier"]["type"], GetParam().type);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachCarrier, SummaryCarrierType,
+    testing::Values(
+        CarrierCase{"analyticJet", ""},
+        CarrierCase{
+            "roundLaminarJet",
+            "carrier { type roundLaminarJet; roundLaminarJetCoeffs { nozzleVelocity 50; } }"},
+        CarrierCase{"foamField", "carrier { type foamField; }"},
+        CarrierCase{"none", "carrier { type none; }"}),
+    [](const auto& info) { return std::string(info.param.type); });
+
+struct InjectionCase {
+    const char* mode;
+    const char* changes;
+};
+
+class SummaryInjectionMode : public testing::TestWithParam<InjectionCase> {};
+
+TEST_P(SummaryInjectionMode, ReportsTheDictionarysMode) {
+    const nlohmann::json settings = settingsWith(GetParam().changes);
+    EXPECT_EQ(settings["injection"]["mode"], GetParam().mode);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachMode, SummaryInjectionMode,
+    testing::Values(InjectionCase{"rate", ""},
+                    InjectionCase{"allAtStart", "injection { mode allAtStart; }"},
+                    // 20³ sites hold the case's 8000 particles, inside its domain box.
+                    InjectionCase{"lattice",
+                                  "injection { mode lattice; latticeCoeffs { origin (0.01 -0.01 "
+                                  "-0.01); spacing 1e-3; sites (20 20 20); velocitySpread 0; } }"}),
+    [](const auto& info) { return std::string(info.param.mode); });
+
+} // namespace
+} // namespace slides
