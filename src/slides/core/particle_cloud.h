@@ -16,6 +16,10 @@ namespace slides {
 
 using ParticleId = std::uint64_t;
 
+/// Diameter of a particle of the given radius [m]: the frames' `diameter`, the length of its
+/// Reynolds number.
+inline double particleDiameter(double radius) { return 2 * radius; }
+
 /// Where a particle is in its life; written to the output as an integer field `state`.
 enum class ParticleState : std::int32_t { active = 0, arrived = 1, escaped = 2 };
 

@@ -3,6 +3,7 @@
 #include "slides/core/parallel.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
+#include "slides/physics/particle_reynolds.h"
 #include "slides/physics/spin.h"
 
 #include <cmath>
@@ -181,10 +182,11 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
                     SlipKernel{finiteReynoldsTables_, radius, viscosity});
                 if (state[0] == 0) { // released now: the jump, Kim's with G1 (Eq. 3.13–3.14)
                     const double slip = startSlip.norm();
-                    const double g1 = scene_.physics.history == HistoryModel::kim
-                                          ? kimInitialFactor(2 * radius * slip / viscosity,
-                                                             particleDensity / fluidDensity)
-                                          : 1.0;
+                    const double g1 =
+                        scene_.physics.history == HistoryModel::kim
+                            ? kimInitialFactor(particleReynolds(slip, radius, viscosity),
+                                               particleDensity / fluidDensity)
+                            : 1.0;
                     memory.start(startSlip, crossoverLag(finiteReynoldsTables_->shape(), slip,
                                                          radius, viscosity, g1));
                 }

@@ -1,5 +1,6 @@
 #include "slides/io/hdf5_particles.h"
 
+#include "slides/core/particle_cloud.h"
 #include "slides/io/atomic_file.h"
 
 #include <cstdio>
@@ -55,7 +56,7 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     if (has(ParticleField::velocity)) file.writeDataset(g, "velocity", frame.velocity, "m/s");
     if (has(ParticleField::diameter)) {
         scratch_.resize(count);
-        for (std::size_t i = 0; i < count; ++i) scratch_[i] = 2 * frame.radius[i];
+        for (std::size_t i = 0; i < count; ++i) scratch_[i] = particleDiameter(frame.radius[i]);
         file.writeDataset(g, "diameter", scratch_, 1, "m");
     }
     if (has(ParticleField::speed)) {
@@ -86,7 +87,7 @@ void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {
         ids[i] = arrivals[i].id;
         surfaces[i] = arrivals[i].surface;
         times[i] = arrivals[i].time;
-        diameters[i] = 2 * arrivals[i].radius;
+        diameters[i] = particleDiameter(arrivals[i].radius);
         positions[i] = arrivals[i].position;
         velocities[i] = arrivals[i].velocity;
     }

@@ -1,5 +1,6 @@
 #include "slides/io/vtk_particles.h"
 
+#include "slides/core/particle_cloud.h"
 #include "slides/io/vtk_writing.h"
 
 #include <vtkCellArray.h>
@@ -40,7 +41,7 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
         points->SetPoint(i, frame.position[k].data());
         vertices->InsertNextCell(1, &i);
         id->SetValue(i, static_cast<vtkTypeInt64>(frame.id[k]));
-        diameter->SetValue(i, 2 * frame.radius[k]);
+        diameter->SetValue(i, particleDiameter(frame.radius[k]));
         velocity->SetTypedTuple(i, frame.velocity[k].data());
         speed->SetValue(i, frame.velocity[k].norm());
         state->SetValue(i, frame.state[k]);

@@ -12,6 +12,8 @@
 // dragCorrection(); the family test (tests/unit/test_drag.cpp) then checks it automatically.
 #pragma once
 
+#include "slides/physics/particle_reynolds.h"
+
 #include <array>
 #include <cmath>
 #include <string_view>
@@ -31,11 +33,6 @@ constexpr std::array<DragModelName, 4> dragModelNames() {
              {DragModel::schillerNaumann, "schillerNaumann"},
              {DragModel::haiderLevenspiel, "haiderLevenspiel"},
              {DragModel::putnam, "putnam"}}};
-}
-
-/// Particle Reynolds number on the diameter and the slip speed |u − v|.
-inline double particleReynolds(double slipSpeed, double particleRadius, double kinematicViscosity) {
-    return 2.0 * particleRadius * slipSpeed / kinematicViscosity;
 }
 
 /// Cd·Re/24 for the given law; 1 for Stokes drag, → 1 as Re → 0 for every law.

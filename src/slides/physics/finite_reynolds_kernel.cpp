@@ -1,5 +1,7 @@
 #include "slides/physics/finite_reynolds_kernel.h"
 
+#include "slides/physics/particle_reynolds.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -53,7 +55,7 @@ double quinticHermite(const std::vector<double>& f, const std::vector<double>& d
 double crossoverLag(const FiniteReynoldsShape& shape, double slipSpeed, double particleRadius,
                     double kinematicViscosity, double accelerationFactor) {
     if (slipSpeed == 0) return std::numeric_limits<double>::infinity();
-    const double reynolds = 2.0 * particleRadius * slipSpeed / kinematicViscosity;
+    const double reynolds = particleReynolds(slipSpeed, particleRadius, kinematicViscosity);
     const double fH = 0.75 + shape.fHSlope * reynolds;
     return std::cbrt(4.0 / std::numbers::pi) * kinematicViscosity * fH * fH /
            (slipSpeed * slipSpeed) * std::pow(accelerationFactor, -1.0 / shape.power());

@@ -13,6 +13,8 @@
 //     physics { history { model basset; accuracy 1e-3; } }   // none | basset | meiAdrian | kim
 #pragma once
 
+#include "slides/physics/particle_reynolds.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -43,7 +45,7 @@ inline double historyDecayTerm(double lag, double slipSpeed, double particleRadi
 /// f_H = 0.75 + 0.105 Re(τ); slipSpeed is |u − v| at the earlier time τ.
 inline double meiAdrianKernel(double lag, double slipSpeed, double particleRadius,
                               double kinematicViscosity) {
-    const double reynolds = 2.0 * particleRadius * slipSpeed / kinematicViscosity;
+    const double reynolds = particleReynolds(slipSpeed, particleRadius, kinematicViscosity);
     const double fH = 0.75 + 0.105 * reynolds;
     const double shortLag = std::pow(
         std::numbers::pi * kinematicViscosity * lag / (particleRadius * particleRadius), 0.25);
@@ -64,7 +66,7 @@ struct KimCoefficients {
 inline double kimKernel(double lag, double slipSpeed, double particleRadius,
                         double kinematicViscosity, double accelerationFactor) {
     using C = KimCoefficients;
-    const double reynolds = 2.0 * particleRadius * slipSpeed / kinematicViscosity;
+    const double reynolds = particleReynolds(slipSpeed, particleRadius, kinematicViscosity);
     const double fH = 0.75 + C::c5 * reynolds;
     const double shortLag =
         std::pow(std::numbers::pi * kinematicViscosity * lag / (particleRadius * particleRadius),
@@ -83,7 +85,7 @@ inline double kimInitialFactor(double initialReynolds, double densityRatio) {
 /// K1(t) of Eq. 3.13: Kim's kernel at lag t with the initial slip |u − v|(0) and G = G1.
 inline double kimInitialKernel(double time, double initialSlipSpeed, double particleRadius,
                                double kinematicViscosity, double densityRatio) {
-    const double reynolds = 2.0 * particleRadius * initialSlipSpeed / kinematicViscosity;
+    const double reynolds = particleReynolds(initialSlipSpeed, particleRadius, kinematicViscosity);
     return kimKernel(time, initialSlipSpeed, particleRadius, kinematicViscosity,
                      kimInitialFactor(reynolds, densityRatio));
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/physics/particle_reynolds.h"
 
 #include <algorithm>
 #include <array>
@@ -61,8 +62,8 @@ inline Vec3 liftAcceleration(LiftModel model, const Vec3& slip, const Vec3& flui
     Vec3 acceleration = Vec3::Zero();
     const double densityRatio = fluidDensity / effectiveDensity;
     if (usesShearLift(model)) {
-        const double diameter = 2 * particleRadius;
-        const double reynolds = slip.norm() * diameter / kinematicViscosity;
+        const double diameter = particleDiameter(particleRadius);
+        const double reynolds = particleReynolds(slip.norm(), particleRadius, kinematicViscosity);
         const double shearReynolds =
             fluidVorticity.norm() * diameter * diameter / kinematicViscosity;
         acceleration += densityRatio * saffmanMeiCoefficient(reynolds, shearReynolds) *
