@@ -59,7 +59,7 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
 }
 
 bool SurfaceImpacts::mayTouch(const Vec3& start, const Vec3& end, double radius) const {
-    for (std::size_t s = 0; s < scene_.surfaces.size(); ++s) {
+    for (const std::size_t s : metAtTouch_) {
         const bool touches =
             walls_[s]
                 ? walls_[s]

@@ -59,8 +59,9 @@ public:
                       const Vec3& startVelocity, double stepLength, double stepEnd,
                       const std::optional<StepTemperature>& temperature, Arrival& arrival);
 
-    /// Whether a sphere of radius moving from start to end can touch any surface or the
-    /// indexed deposit: false means meet() would find nothing (a test safe to run in parallel).
+    /// Whether a sphere of radius moving from start to end can touch a surface met at the touch
+    /// (a soft wall is not) or the indexed deposit: false means meet() would find nothing (a
+    /// test safe to run in parallel).
     bool mayTouch(const Vec3& start, const Vec3& end, double radius) const;
 
     /// Puts a particle that stuck in an earlier run back into the deposit (restart).
