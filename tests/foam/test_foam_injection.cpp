@@ -55,7 +55,7 @@ TEST(FoamInjection, KeepsTheCellItsSearchFound) {
     const Scene scene = readScene(directory);
     const auto carrier = makeCarrier(scene);
     const auto& foam = dynamic_cast<const FoamCarrier&>(*carrier);
-    Injector injector(scene);
+    Injector injector(scene.injection, scene.nozzle, scene.particles);
     ParticleCloud cloud;
     injector.injectUntil(1e-12, 0.0, *carrier, cloud);
     ASSERT_EQ(cloud.size(), 500u);

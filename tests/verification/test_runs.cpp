@@ -117,7 +117,7 @@ TEST(Injection, StartsOnTheNozzleDiscWithGasPlusCrossSpanVelocity) {
     Scene scene = readScene(defaultCase);
     scene.injection.mode = InjectionMode::allAtStart;
     const auto carrier = makeCarrier(scene);
-    Injector injector(scene);
+    Injector injector(scene.injection, scene.nozzle, scene.particles);
     ParticleCloud cloud;
     injector.injectUntil(0.0 + 1e-12, 0.0, *carrier, cloud);
     ASSERT_EQ(static_cast<long>(cloud.size()), scene.particles.count);

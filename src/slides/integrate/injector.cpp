@@ -30,23 +30,22 @@ Vec3 latticeSite(const InjectionSettings& injection, ParticleId id) {
     return injection.latticeOrigin + injection.latticeSpacing * (cell.array() + 0.5).matrix();
 }
 
-Injector::Injector(const Scene& scene) : scene_(scene) {}
+Injector::Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
+                   const ParticleSettings& particles)
+    : injection_(injection), nozzle_(nozzle), count_(particles.count), radius_(particles.radius) {}
 
 double Injector::injectionTime(ParticleId id) const {
-    return scene_.injection.mode == InjectionMode::rate
-               ? static_cast<double>(id) / scene_.injection.rate
-               : 0.0;
+    return injection_.mode == InjectionMode::rate ? static_cast<double>(id) / injection_.rate : 0.0;
 }
 
 void Injector::injectUntil(double until, double time, const CarrierField& carrier,
                            ParticleCloud& cloud) {
     const long first = injected_;
     long last = first;
-    while (last < scene_.particles.count && injectionTime(static_cast<ParticleId>(last)) < until)
-        ++last;
+    while (last < count_ && injectionTime(static_cast<ParticleId>(last)) < until) ++last;
     if (last == first) return;
 
-    const JetNozzle& nozzle = scene_.nozzle;
+    const JetNozzle& nozzle = nozzle_;
     const Vec3 across = nozzle.crossSpanDirection;
     const Vec3 other = nozzle.axis.cross(across);
     const auto count = static_cast<std::size_t>(last - first);
@@ -54,10 +53,10 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     randomVelocities_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
         const auto id = static_cast<ParticleId>(first) + k;
-        RandomStream random(scene_.injection.seed, id, RandomPurpose::injection);
-        if (scene_.injection.mode == InjectionMode::lattice) {
-            positions_[k] = latticeSite(scene_.injection, id);
-            const double spread = scene_.injection.latticeVelocitySpread;
+        RandomStream random(injection_.seed, id, RandomPurpose::injection);
+        if (injection_.mode == InjectionMode::lattice) {
+            positions_[k] = latticeSite(injection_, id);
+            const double spread = injection_.latticeVelocitySpread;
             for (int axis = 0; axis < 3; ++axis)
                 randomVelocities_[k][axis] = spread * (2 * random.uniform() - 1);
             continue;
@@ -67,7 +66,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         const double direction = 2.0 * std::numbers::pi * random.uniform();
         positions_[k] = nozzle.centre + nozzle.radius * radialFraction *
                                             (std::cos(angle) * across + std::sin(angle) * other);
-        randomVelocities_[k] = scene_.injection.crossSpanSpeed *
+        randomVelocities_[k] = injection_.crossSpanSpeed *
                                (std::cos(direction) * across + std::sin(direction) * other);
     }
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
@@ -85,7 +84,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     for (std::size_t k = 0; k < count; ++k) {
         const auto id = static_cast<ParticleId>(first) + k;
         cloud.add(id, positions_[k], gas_.velocity[k] + randomVelocities_[k],
-                  drawRadius(scene_.particles.radius, scene_.injection.seed, id));
+                  drawRadius(radius_, injection_.seed, id));
     }
     injected_ = last;
 }

@@ -13,8 +13,9 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/config/scene.h"
+#include "slides/carrier/jet_frame.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/injection_settings.h"
 
 namespace slides {
 
@@ -26,7 +27,9 @@ double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, Pa
 
 class Injector {
 public:
-    explicit Injector(const Scene& scene);
+    /// Injects particles.count particles of particles.radius from the nozzle.
+    Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
+             const ParticleSettings& particles);
 
     /// Adds every particle due before `until` that is not yet in the cloud; the gas is
     /// sampled once for the whole batch.
@@ -35,12 +38,15 @@ public:
     long injected() const { return injected_; }
     /// Continues as if particles 0 … injected − 1 had been injected (restart).
     void resumeAfter(long injected) { injected_ = injected; }
-    bool finished() const { return injected_ == scene_.particles.count; }
+    bool finished() const { return injected_ == count_; }
     /// Time at which particle id enters [s].
     double injectionTime(ParticleId id) const;
 
 private:
-    const Scene& scene_;
+    InjectionSettings injection_;
+    JetNozzle nozzle_;
+    long count_;
+    RadiusDistribution radius_;
     long injected_ = 0;
     std::vector<Vec3> positions_;
     std::vector<Vec3> randomVelocities_; ///< the random part of each start velocity

@@ -10,24 +10,24 @@
 
 namespace slides {
 
-MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
-    : scene_(scene), drag_{scene.physics.drag, scene.fluid.density, scene.fluid.kinematicViscosity,
-                           scene.particles.density},
-      inertia_{scene.physics.addedMass, scene.physics.pressureGradient},
-      bodyAcceleration_(inertia_.bodyAcceleration(scene.physics.gravity, scene.particles.density,
-                                                  scene.fluid.density, scene.physics.buoyancy)),
-      fluidAccelerationFactor_(
-          inertia_.fluidAccelerationFactor(scene.particles.density, scene.fluid.density)) {
-    const PhysicsSettings& physics = scene.physics;
+MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
+                                     double particleDensity, const TimeSettings& time)
+    : physics_(physics), fluid_(fluid),
+      particleDensity_(particleDensity), drag_{physics.drag, fluid.density,
+                                               fluid.kinematicViscosity, particleDensity},
+      inertia_{physics.addedMass, physics.pressureGradient},
+      bodyAcceleration_(inertia_.bodyAcceleration(physics.gravity, particleDensity, fluid.density,
+                                                  physics.buoyancy)),
+      fluidAccelerationFactor_(inertia_.fluidAccelerationFactor(particleDensity, fluid.density)) {
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     width_ = 4; // age, v_{n−1}
     history_ = physics.history != HistoryModel::none;
     spinHistory_ = physics.spin && physics.spinHistory;
     if (!history_ && !spinHistory_) return;
-    memory_ = WindowTailLayout::make(scene.time.dt, scene.time.endTime, physics.historyAccuracy);
+    memory_ = WindowTailLayout::make(time.dt, time.endTime, physics.historyAccuracy);
     if (physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim) {
-        finiteReynolds_ = FiniteReynoldsLayout::make(*memory_, scene.time.endTime);
+        finiteReynolds_ = FiniteReynoldsLayout::make(*memory_, time.endTime);
         finiteReynoldsTables_ = &FiniteReynoldsKernel::of(
             physics.history == HistoryModel::kim ? kimShape : meiAdrianShape);
     }
@@ -44,9 +44,9 @@ MaxeyRileyStepper::MaxeyRileyStepper(const Scene& scene)
 Vec3 MaxeyRileyStepper::spinWithHistory(double* state, double age, const Vec3& spin,
                                         const Vec3& rotationStart, const Vec3& rotationEnd,
                                         double radius, double h) const {
-    const double viscosity = scene_.fluid.kinematicViscosity;
+    const double viscosity = fluid_.kinematicViscosity;
     const double responseTime =
-        spinResponseTime(scene_.particles.density, scene_.fluid.density, viscosity, radius);
+        spinResponseTime(particleDensity_, fluid_.density, viscosity, radius);
     const HistoryKernel kernel{radius * radius / viscosity};
     SlipStep step;
     step.h = h;
@@ -72,9 +72,9 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     const auto stateOf = [&](std::ptrdiff_t i) {
         return cloud.modelState.data() + static_cast<std::size_t>(i) * width_;
     };
-    const double fluidDensity = scene_.fluid.density;
-    const double particleDensity = scene_.particles.density;
-    const double viscosity = scene_.fluid.kinematicViscosity;
+    const double fluidDensity = fluid_.density;
+    const double particleDensity = particleDensity_;
+    const double viscosity = fluid_.kinematicViscosity;
     const double addedMass = inertia_.addedMassCoefficient();
     // Prediction of the step's end on the smooth part w = v + s0 φ(age) of the velocity (the
     // start mode s0 φ carries the √t of a release with slip): w_{n+1} ≈ 2 w_n − w_{n−1} (w_n on
@@ -111,7 +111,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     sampleEnd(predicted_, gasEnd_);
 
     const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
-    const LiftModel lift = scene_.physics.lift;
+    const LiftModel lift = physics_.lift;
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         double* state = stateOf(i);
@@ -149,7 +149,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             step.forceEnd += fluidAccelerationFactor_ * steadyFluidAcceleration(u1, grad1);
             const Vec3 vorticity0 = vorticity(grad0), vorticity1 = vorticity(grad1);
             Vec3 spinStart = Vec3::Zero(), spinEnd = Vec3::Zero();
-            if (scene_.physics.spin) {
+            if (physics_.spin) {
                 Vec3& spin = cloud.angularVelocity[static_cast<std::size_t>(i)];
                 spinStart = spin;
                 spin = spinHistory_
@@ -183,7 +183,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
                 if (state[0] == 0) { // released now: the jump, Kim's with G1 (Eq. 3.13–3.14)
                     const double slip = startSlip.norm();
                     const double g1 =
-                        scene_.physics.history == HistoryModel::kim
+                        physics_.history == HistoryModel::kim
                             ? kimInitialFactor(particleReynolds(slip, radius, viscosity),
                                                particleDensity / fluidDensity)
                             : 1.0;

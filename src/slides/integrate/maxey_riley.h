@@ -29,11 +29,13 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/config/scene.h"
+#include "slides/carrier/carrier_settings.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/time_settings.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/finite_reynolds_history.h"
 #include "slides/physics/history_integrator.h"
+#include "slides/physics/physics_settings.h"
 #include "slides/physics/unsteady.h"
 
 #include <functional>
@@ -44,8 +46,10 @@ namespace slides {
 
 class MaxeyRileyStepper {
 public:
-    /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run.
-    explicit MaxeyRileyStepper(const Scene& scene);
+    /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run. The
+    /// history memory is sized for steps of time.dt up to time.endTime.
+    MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
+                      double particleDensity, const TimeSettings& time);
 
     /// Doubles of model state per particle.
     std::size_t stateWidth() const { return width_; }
@@ -66,7 +70,9 @@ private:
     Vec3 spinWithHistory(double* state, double age, const Vec3& spin, const Vec3& rotationStart,
                          const Vec3& rotationEnd, double radius, double h) const;
 
-    const Scene& scene_;
+    PhysicsSettings physics_;
+    FluidSettings fluid_;
+    double particleDensity_;
     DragParameters drag_;
     FluidInertia inertia_;
     Vec3 bodyAcceleration_;

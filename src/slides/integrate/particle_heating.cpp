@@ -7,15 +7,14 @@
 
 namespace slides {
 
-ParticleHeating::ParticleHeating(const Scene& scene)
-    : model_(scene.physics.heatTransfer),
-      prandtl_(prandtlNumber(scene.fluid.density, scene.fluid.kinematicViscosity,
-                             scene.fluid.specificHeat, scene.fluid.thermalConductivity)),
-      kinematicViscosity_(scene.fluid.kinematicViscosity),
-      thermalConductivity_(scene.fluid.thermalConductivity),
-      particleDensity_(scene.particles.density),
-      particleSpecificHeat_(scene.particles.specificHeat),
-      injectionTemperature_(scene.particles.injectionTemperature) {}
+ParticleHeating::ParticleHeating(HeatTransferModel model, const FluidSettings& fluid,
+                                 const ParticleSettings& particles)
+    : model_(model), prandtl_(prandtlNumber(fluid.density, fluid.kinematicViscosity,
+                                            fluid.specificHeat, fluid.thermalConductivity)),
+      kinematicViscosity_(fluid.kinematicViscosity),
+      thermalConductivity_(fluid.thermalConductivity), particleDensity_(particles.density),
+      particleSpecificHeat_(particles.specificHeat),
+      injectionTemperature_(particles.injectionTemperature) {}
 
 void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
                               const std::vector<Vec3>& startVelocities,

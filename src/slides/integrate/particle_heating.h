@@ -10,8 +10,10 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/config/scene.h"
+#include "slides/carrier/carrier_settings.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/injection_settings.h"
+#include "slides/physics/heat_transfer.h"
 
 #include <vector>
 
@@ -19,7 +21,8 @@ namespace slides {
 
 class ParticleHeating {
 public:
-    explicit ParticleHeating(const Scene& scene);
+    ParticleHeating(HeatTransferModel model, const FluidSettings& fluid,
+                    const ParticleSettings& particles);
 
     bool on() const { return model_ != HeatTransferModel::none; }
 

@@ -19,15 +19,17 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
-      injector_(scene), needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
-                               .temperature =
-                                   scene.physics.heatTransfer != HeatTransferModel::none},
-      dispersion_(scene), heating_(scene), surfaces_(scene, carrier) {
+      injector_(scene.injection, scene.nozzle, scene.particles),
+      needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
+             .temperature = scene.physics.heatTransfer != HeatTransferModel::none},
+      dispersion_(scene.physics, scene.injection.seed),
+      heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
+      surfaces_(scene, carrier) {
     if (!(scene.time.dt > 0))
         throw std::logic_error("time.dt is not set: the scene analysis chooses it "
                                "(analysis/scene_analysis.h)");
     if (scene.physics.unsteadyForces()) {
-        maxeyRiley_.emplace(scene);
+        maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
     if (scene.collisions.model == CollisionModel::impulse) collisions_.emplace(scene);

@@ -5,9 +5,8 @@
 
 namespace slides {
 
-TurbulentDispersion::TurbulentDispersion(const Scene& scene)
-    : model_(scene.physics.dispersion), constants_(scene.physics.dispersionConstants),
-      seed_(scene.injection.seed) {}
+TurbulentDispersion::TurbulentDispersion(const PhysicsSettings& physics, std::uint64_t seed)
+    : model_(physics.dispersion), constants_(physics.dispersionConstants), seed_(seed) {}
 
 void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
                                   const std::vector<double>& stepLengths,

@@ -13,9 +13,9 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/physics_settings.h"
 
 #include <vector>
 
@@ -23,7 +23,8 @@ namespace slides {
 
 class TurbulentDispersion {
 public:
-    explicit TurbulentDispersion(const Scene& scene);
+    /// physics.dispersion and its constants; seed: injection.seed, keying the eddy streams.
+    TurbulentDispersion(const PhysicsSettings& physics, std::uint64_t seed);
 
     bool on() const { return model_ != DispersionModel::none; }
 
