@@ -180,7 +180,7 @@ TEST(DensePack, ElasticCollisionsConserveEnergyInelasticNeverGainIt) {
         scene.collisions.restitution = {RestitutionModel::constant, restitution, 3};
         scene.collisions.friction = {0, 0};
         ParticleCloud cloud = densePack(1.0);
-        ParticleCollisions collisions(scene);
+        ParticleCollisions collisions(scene.collisions, scene.particles);
         const double h = 2e-5; // 20 µm a step at 1 m/s, 0.4 radii
         const std::vector<double> steps(cloud.size(), h);
         const double energy0 = kineticEnergy(cloud);

@@ -224,7 +224,7 @@ TEST(CloudCollisions, ConserveMomentumAndDoNotDependOnThreads) {
         Vec3 momentum0 = Vec3::Zero();
         for (std::size_t i = 0; i < cloud.size(); ++i)
             momentum0 += std::pow(cloud.radius[i], 3) * cloud.velocity[i];
-        ParticleCollisions collisions(scene);
+        ParticleCollisions collisions(scene.collisions, scene.particles);
         collisions.collide(cloud, start, steps);
         Vec3 momentum1 = Vec3::Zero();
         for (std::size_t i = 0; i < cloud.size(); ++i)
@@ -266,7 +266,7 @@ TEST(CollisionalHeating, PairContactsTurnTheEnergyTheyDissipateIntoHeat) {
         return energy;
     };
     const double before = kinetic(cloud);
-    ParticleCollisions collisions(scene);
+    ParticleCollisions collisions(scene.collisions, scene.particles);
     collisions.collide(cloud, start, std::vector<double>(cloud.size(), h));
     double heat = 0;
     for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -63,7 +63,7 @@ slides::Scene sprayScene(long count) {
 void collide(benchmark::State& state) {
     const slides::Scene scene = sprayScene(state.range(0));
     const Spray spray = sprayOf(state.range(0), scene);
-    slides::ParticleCollisions collisions(scene);
+    slides::ParticleCollisions collisions(scene.collisions, scene.particles);
     for (auto _ : state) {
         state.PauseTiming();
         slides::ParticleCloud cloud = spray.cloud;

@@ -11,7 +11,9 @@
 
 namespace slides {
 
-ParticleCollisions::ParticleCollisions(const Scene& scene) : scene_(scene) {}
+ParticleCollisions::ParticleCollisions(const CollisionSettings& collisions,
+                                       const ParticleSettings& particles)
+    : settings_(collisions), particles_(particles) {}
 
 void ParticleCollisions::findContacts(const ParticleCloud& cloud,
                                       const std::vector<Vec3>& startPositions) {
@@ -47,8 +49,8 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
                                  const std::vector<double>& stepLengths) {
     if (cloud.size() < 2) return;
     findContacts(cloud, startPositions);
-    const MaterialSettings& material = scene_.particles.material;
-    const bool heats = scene_.collisions.heating && !cloud.temperature.empty();
+    const MaterialSettings& material = particles_.material;
+    const bool heats = settings_.heating && !cloud.temperature.empty();
     for (const ParticleContact& contact : contacts_) {
         const std::uint32_t a = contact.a, b = contact.b;
         const double s = contact.fraction;
@@ -57,7 +59,7 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
         const Vec3 separation = centreA - centreB;
         if (!(separation.squaredNorm() > 0)) continue; // coincident centres: no normal
         const Vec3 normal = separation.normalized();
-        const double density = scene_.particles.density;
+        const double density = particles_.density;
         const double massA = sphereMass(cloud.radius[a], density);
         const double massB = sphereMass(cloud.radius[b], density);
         ImpactBody bodyA{cloud.velocity[a], cloud.angularVelocity[a], 1 / massA, cloud.radius[a]};
@@ -66,14 +68,14 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
         if (approach <= 0) continue;
         const ContactPair pair =
             contactPair({massA, cloud.radius[a], &material}, {massB, cloud.radius[b], &material});
-        const double e = restitutionCoefficient(scene_.collisions.restitution, pair, approach);
-        const Vec3 impulse = contactImpulse(bodyA, bodyB, normal, e, scene_.collisions.friction);
+        const double e = restitutionCoefficient(settings_.restitution, pair, approach);
+        const Vec3 impulse = contactImpulse(bodyA, bodyB, normal, e, settings_.friction);
         const double energyBefore = kineticEnergy(bodyA) + kineticEnergy(bodyB);
         applyImpulse(bodyA, bodyB, normal, impulse);
         if (heats) {
-            const double rise = collisionalTemperatureRise(
-                energyBefore - kineticEnergy(bodyA) - kineticEnergy(bodyB),
-                scene_.particles.specificHeat, massA + massB);
+            const double dissipated = energyBefore - kineticEnergy(bodyA) - kineticEnergy(bodyB);
+            const double rise =
+                collisionalTemperatureRise(dissipated, particles_.specificHeat, massA + massB);
             cloud.temperature[a] += rise;
             cloud.temperature[b] += rise;
         }

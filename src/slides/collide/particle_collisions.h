@@ -17,8 +17,9 @@
 #pragma once
 
 #include "slides/collide/cell_grid.h"
-#include "slides/config/scene.h"
+#include "slides/collide/collision_settings.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/injection_settings.h"
 
 #include <cstdint>
 #include <vector>
@@ -33,7 +34,8 @@ struct ParticleContact {
 
 class ParticleCollisions {
 public:
-    explicit ParticleCollisions(const Scene& scene);
+    /// The particles' density, material and specific heat set their masses, contact and heating.
+    ParticleCollisions(const CollisionSettings& collisions, const ParticleSettings& particles);
 
     /// Resolves the contacts of the step that moved each particle i from startPositions[i] to
     /// cloud.position[i] over stepLengths[i].
@@ -48,7 +50,8 @@ public:
 private:
     void findContacts(const ParticleCloud& cloud, const std::vector<Vec3>& startPositions);
 
-    const Scene& scene_;
+    CollisionSettings settings_;
+    ParticleSettings particles_;
     CellGrid grid_;
     std::vector<Vec3> midpoints_; ///< of the step's chords, binned
     std::vector<ParticleContact> contacts_;

@@ -24,27 +24,29 @@ double inertiaPerMass(double radius) { return 0.4 * radius * radius; } // solid 
 
 } // namespace
 
-SoftSphereCollisions::SoftSphereCollisions(const Scene& scene)
-    : scene_(scene), newWallContacts_(scene.surfaces.size(), 0) {
-    const double e = scene.collisions.restitution.coefficient;
-    const double friction = scene.collisions.friction.dynamicCoefficient;
-    law_ = scene.collisions.softSphere.damping == SoftSphereDamping::tsuji
+SoftSphereCollisions::SoftSphereCollisions(const CollisionSettings& collisions,
+                                           const ParticleSettings& particles,
+                                           const std::vector<Surface>& surfaces)
+    : settings_(collisions), particles_(particles), surfaces_(surfaces),
+      newWallContacts_(surfaces.size(), 0) {
+    const double e = collisions.restitution.coefficient;
+    const double friction = collisions.friction.dynamicCoefficient;
+    law_ = collisions.softSphere.damping == SoftSphereDamping::tsuji
                ? SoftContactLaw{liggghtsDampingRatio(e), friction}
                : softContactLaw(e, friction);
     // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
-    const ContactBody particle{1.0, 1.0, &scene.particles.material};
+    const ContactBody particle{1.0, 1.0, &particles.material};
     particleModuli_ = contactPair(particle, particle);
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
         wallModuli_.push_back(
-            contactPair(particle, ContactBody{.material = &scene.surfaces[s].material}));
-        if (meetsBySoftContact(scene.collisions, scene.surfaces[s].interaction))
-            softWalls_.push_back(s);
+            contactPair(particle, ContactBody{.material = &surfaces[s].material}));
+        if (meetsBySoftContact(collisions, surfaces[s].interaction)) softWalls_.push_back(s);
     }
 }
 
 void SoftSphereCollisions::halfKick(ParticleCloud& cloud,
                                     const std::vector<double>& stepLengths) const {
-    const double density = scene_.particles.density;
+    const double density = particles_.density;
     const auto kick = [&](std::size_t i) {
         // A particle without load keeps its velocity as it is (a zero kick could turn −0 to +0).
         const Vec3& force = cloud.contactForce[i];
@@ -86,7 +88,7 @@ bool SoftSphereCollisions::listIsStale(const ParticleCloud& cloud) const {
 }
 
 ContactPair SoftSphereCollisions::pairOf(const Entry& entry, const ParticleCloud& cloud) const {
-    const double density = scene_.particles.density;
+    const double density = particles_.density;
     const double radius = cloud.radius[entry.first];
     ContactPair pair;
     if (entry.second >= 0) {
@@ -110,7 +112,7 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
 
     const double largestRadius =
         cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
-    skin_ = scene_.collisions.softSphere.neighbourSkin * largestRadius;
+    skin_ = settings_.softSphere.neighbourSkin * largestRadius;
 
     grid_.build(cloud.position, 2 * largestRadius + skin_);
     // The search reads positions and radii in the grid's cell order, from memory in order.
@@ -127,7 +129,7 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     });
     for (std::uint32_t i = 0; i < cloud.size(); ++i)
         for (const std::size_t s : softWalls_) {
-            const Surface& wall = scene_.surfaces[s];
+            const Surface& wall = surfaces_[s];
             if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
                 entries_.push_back({i, -1 - static_cast<std::int32_t>(s), {}, false});
         }
@@ -186,7 +188,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
             const double reach = cloud.radius[a] + cloud.radius[b];
             return (cloud.position[a] - cloud.position[b]).squaredNorm() >= reach * reach;
         }
-        const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+        const Surface& wall = surfaces_[static_cast<std::size_t>(-1 - entry.second)];
         return (cloud.position[a] - wall.point).dot(wall.normal) >= cloud.radius[a];
     };
     std::fill(newWallContacts_.begin(), newWallContacts_.end(), 0);
@@ -218,7 +220,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                                         sphere(static_cast<std::size_t>(entry.second)),
                                         entry.spring, dt);
             } else {
-                const Surface& wall = scene_.surfaces[static_cast<std::size_t>(-1 - entry.second)];
+                const Surface& wall = surfaces_[static_cast<std::size_t>(-1 - entry.second)];
                 load = sphereWallLoad(pair, law_, sphere(entry.first), wall.point, wall.normal,
                                       entry.spring, dt);
             }
@@ -242,8 +244,8 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
     collectLoaded(cloud);
 
     // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
-    const bool heats = scene_.collisions.heating && !cloud.temperature.empty();
-    const double density = scene_.particles.density;
+    const bool heats = settings_.heating && !cloud.temperature.empty();
+    const double density = particles_.density;
     const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t k = 0; k < count; ++k) {
@@ -264,7 +266,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                          ? sphereMass(cloud.radius[static_cast<std::size_t>(entry.second)], density)
                          : 0.0);
                 heat += collisionalTemperatureRise(load.dissipatedPower * dt,
-                                                   scene_.particles.specificHeat, masses);
+                                                   particles_.specificHeat, masses);
             }
         }
         cloud.contactForce[i] = force;

@@ -32,8 +32,9 @@
 
 #include "slides/collide/cell_grid.h"
 #include "slides/collide/soft_sphere_pair.h"
-#include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/injection_settings.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <cstdint>
 #include <vector>
@@ -53,7 +54,9 @@ constexpr ParticleId wallId(std::size_t surface) { return ~ParticleId{0} - surfa
 
 class SoftSphereCollisions {
 public:
-    explicit SoftSphereCollisions(const Scene& scene);
+    /// Surface s is a soft wall where meetsBySoftContact(collisions, its interaction).
+    SoftSphereCollisions(const CollisionSettings& collisions, const ParticleSettings& particles,
+                         const std::vector<Surface>& surfaces);
 
     /// Advances every particle's velocity and spin by its contact load over half its step
     /// (cloud.contactForce, contactTorque: sized by the caller, zero for new particles).
@@ -99,7 +102,9 @@ private:
     /// The entry's effective pair: the moduli of its kind with the bodies' radii and masses.
     ContactPair pairOf(const Entry& entry, const ParticleCloud& cloud) const;
 
-    const Scene& scene_;
+    CollisionSettings settings_;
+    ParticleSettings particles_;
+    std::vector<Surface> surfaces_;
     SoftContactLaw law_;
     std::vector<std::size_t> softWalls_; ///< surface indices
     /// E*, G*, yield stress and adhesion of two particles, and of a particle on each surface

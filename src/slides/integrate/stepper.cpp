@@ -32,8 +32,10 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
         maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time);
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
-    if (scene.collisions.model == CollisionModel::impulse) collisions_.emplace(scene);
-    if (scene.collisions.model == CollisionModel::softSphere) softSpheres_.emplace(scene);
+    if (scene.collisions.model == CollisionModel::impulse)
+        collisions_.emplace(scene.collisions, scene.particles);
+    if (scene.collisions.model == CollisionModel::softSphere)
+        softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
     tracksSpin_ = tracksSpin(scene);
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
