@@ -41,7 +41,8 @@ ParticleCloud oneParticle(const Vec3& end, const Vec3& v) {
 TEST(SurfaceImpacts, ChordReachingThePlaneIsMetThoughBothVelocitiesLeaveIt) {
     const Scene scene = plateScene(SurfaceInteraction::rebound);
     const test::UniformFlow gas(Vec3::Zero());
-    SurfaceImpacts impacts(scene, gas);
+    SurfaceImpacts impacts(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
+                           scene.physics.heatTransfer, gas);
     // Gap +10 µm at the start, −10 µm at the end (the chord at 2 m/s towards the plate, the
     // velocities −1 m/s, away from it): touch at s = ½ with c_n = 2 m/s.
     const Vec3 start(plateX - radius - 10e-6, 0, 0), end(plateX - radius + 10e-6, 0, 0);
@@ -59,7 +60,8 @@ TEST(SurfaceImpacts, ChordReachingThePlaneIsMetThoughBothVelocitiesLeaveIt) {
 TEST(SurfaceImpacts, SphereSetBackFromTheDepositRestsOnThePlane) {
     const Scene scene = plateScene(SurfaceInteraction::deposit);
     const test::UniformFlow gas(Vec3::Zero());
-    SurfaceImpacts impacts(scene, gas);
+    SurfaceImpacts impacts(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
+                           scene.physics.heatTransfer, gas);
     // A deposited particle 150 µm from the plate; the new one starts 85 µm from it, 60 µm
     // aside, overlapping it (centres 88.5 µm apart), and moves towards it along the plate at
     // 0.3 m/s (0.2 m/s along the line of centres, below the deposit's 0.847 m/s): it sticks.

@@ -19,7 +19,6 @@
 #include "slides/physics/physics_settings.h"
 #include "slides/surfaces/surface_settings.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -43,13 +42,9 @@ struct Scene {
     OutputSettings output;
 };
 
-/// Whether the particles carry a spin ω: physics.spin, or contacts with friction (collisions,
-/// surfaces that rebound or deposit) that change it.
+/// Whether the particles carry a spin ω (surfaces/surface_settings.h).
 inline bool tracksSpin(const Scene& scene) {
-    return scene.physics.spin || scene.collisions.model != CollisionModel::none ||
-           std::any_of(scene.surfaces.begin(), scene.surfaces.end(), [](const Surface& s) {
-               return s.interaction != SurfaceInteraction::absorb;
-           });
+    return tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
 }
 
 } // namespace slides

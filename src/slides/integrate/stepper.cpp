@@ -24,7 +24,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
              .temperature = scene.physics.heatTransfer != HeatTransferModel::none},
       dispersion_(scene.physics, scene.injection.seed),
       heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
-      surfaces_(scene, carrier) {
+      surfaces_(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
+                scene.physics.heatTransfer, carrier) {
     if (!(scene.time.dt > 0))
         throw std::logic_error("time.dt is not set: the scene analysis chooses it "
                                "(analysis/scene_analysis.h)");
@@ -36,7 +37,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
         collisions_.emplace(scene.collisions, scene.particles);
     if (scene.collisions.model == CollisionModel::softSphere)
         softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
-    tracksSpin_ = tracksSpin(scene);
+    tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
 }
 

@@ -1,7 +1,7 @@
 // ParticleField: the point arrays a particle frame (.vtp) can carry, chosen by
 // `output { fields (id diameter velocity speed state temperature angularVelocity); }` (default:
 // all of them; temperature exists only with heat transfer, physics/heat_transfer.h, and
-// angularVelocity only where the particles carry a spin, config/scene.h tracksSpin).
+// angularVelocity only where the particles carry a spin, surfaces/surface_settings.h tracksSpin).
 #pragma once
 
 #include <array>

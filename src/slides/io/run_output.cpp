@@ -109,7 +109,7 @@ void RunOutput::writeFrame(const Stepper& stepper) {
 
 void RunOutput::finish(const Stepper& stepper, const nlohmann::json& summary) {
     if (hdf5_) hdf5_->finish(stepper.arrivals());
-    writeDeposit(directory_, scene_, stepper.arrivals());
+    writeDeposit(directory_, scene_.surfaces, stepper.arrivals());
     writeTextAtomically(directory_ / "summary.json", summary.dump(2) + "\n");
 }
 

@@ -34,14 +34,14 @@ void writeDepositMapVti(const std::filesystem::path& file, const DepositMap& map
     writeVtkAtomically(file, writer);
 }
 
-void writeDeposit(const std::filesystem::path& directory, const Scene& scene,
+void writeDeposit(const std::filesystem::path& directory, const std::vector<Surface>& surfaces,
                   const std::vector<Arrival>& arrivals) {
     std::vector<std::uint64_t> ids;
     std::vector<Vec3> positions, velocities;
     std::vector<double> radii;
     bool anyDepositSurface = false;
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        const Surface& plane = scene.surfaces[s];
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        const Surface& plane = surfaces[s];
         if (plane.interaction != SurfaceInteraction::deposit) continue;
         anyDepositSurface = true;
         for (const Arrival& arrival : arrivals)

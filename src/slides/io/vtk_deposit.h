@@ -4,9 +4,9 @@
 // or Warp By Scalar along the normal for a relief).
 #pragma once
 
-#include "slides/config/scene.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit_map.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <filesystem>
 #include <vector>
@@ -14,7 +14,7 @@
 namespace slides {
 
 /// Writes deposit.vtp and a deposit_<name>.vti per deposit surface into directory.
-void writeDeposit(const std::filesystem::path& directory, const Scene& scene,
+void writeDeposit(const std::filesystem::path& directory, const std::vector<Surface>& surfaces,
                   const std::vector<Arrival>& arrivals);
 
 /// Writes one height map (io/vtk_writing.h: atomically, compressed).

@@ -8,8 +8,8 @@
 // deposit plus one radius.
 #pragma once
 
-#include "slides/config/scene.h"
 #include "slides/surfaces/arrival.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <vector>
 

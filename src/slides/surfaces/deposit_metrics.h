@@ -7,8 +7,8 @@
 // injected.
 #pragma once
 
-#include "slides/config/scene.h"
 #include "slides/surfaces/arrival.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <algorithm>
 #include <limits>

@@ -8,7 +8,8 @@
 //     surfaces { target { type plane; point (0.1 0 0); normal (-1 0 0); } }
 #pragma once
 
-#include "slides/config/scene.h"
+#include "slides/carrier/carrier_field.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <optional>
 

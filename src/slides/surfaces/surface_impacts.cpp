@@ -12,14 +12,19 @@
 
 namespace slides {
 
-SurfaceImpacts::SurfaceImpacts(const Scene& scene, const CarrierField& carrier)
-    : scene_(scene), rebounds_(scene.surfaces.size(), 0) {
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        const Surface& surface = scene.surfaces[s];
+SurfaceImpacts::SurfaceImpacts(const std::vector<Surface>& surfaces,
+                               const CollisionSettings& collisions,
+                               const AdhesionSettings& deposition,
+                               const ParticleSettings& particles, HeatTransferModel heatTransfer,
+                               const CarrierField& carrier)
+    : surfaces_(surfaces), collisions_(collisions), deposition_(deposition), particles_(particles),
+      heatTransfer_(heatTransfer), rebounds_(surfaces.size(), 0) {
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        const Surface& surface = surfaces[s];
         walls_.push_back(surface.patch.empty()
                              ? std::nullopt
                              : std::optional<PatchWall>(carrier.patchTriangles(surface.patch)));
-        if (!meetsBySoftContact(scene.collisions, surface.interaction)) metAtTouch_.push_back(s);
+        if (!meetsBySoftContact(collisions, surface.interaction)) metAtTouch_.push_back(s);
     }
 }
 
@@ -42,13 +47,13 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
             arrival.temperature = temperatureWithinStep(temperature->start, cloud.temperature[i],
                                                         temperature->gas, elapsed);
             // Sticking dissipates all the kinetic energy it arrived with.
-            const Surface& plane = scene_.surfaces[static_cast<std::size_t>(arrival.surface)];
+            const Surface& plane = surfaces_[static_cast<std::size_t>(arrival.surface)];
             if (plane.interaction == SurfaceInteraction::deposit && heats()) {
-                const double mass = sphereMass(arrival.radius, scene_.particles.density);
+                const double mass = sphereMass(arrival.radius, particles_.density);
                 const ImpactBody stuck{arrival.velocity, cloud.angularVelocity[i], 1 / mass,
                                        arrival.radius};
-                arrival.temperature += collisionalTemperatureRise(
-                    kineticEnergy(stuck), scene_.particles.specificHeat, mass);
+                arrival.temperature +=
+                    collisionalTemperatureRise(kineticEnergy(stuck), particles_.specificHeat, mass);
             }
         }
         if (impact != ImpactResult::rebounded)
@@ -65,7 +70,7 @@ bool SurfaceImpacts::mayTouch(const Vec3& start, const Vec3& end, double radius)
                 ? walls_[s]
                       ->firstTouch(start, end, radius, [](double, const Vec3&) { return true; })
                       .has_value()
-                : planeContactFraction(scene_.surfaces[s], start, end, radius).has_value();
+                : planeContactFraction(surfaces_[s], start, end, radius).has_value();
         if (touches) return true;
     }
     return deposit_.firstTouch(start, end, radius).has_value();
@@ -76,7 +81,7 @@ std::optional<PatchTouch> SurfaceImpacts::overlapWith(std::size_t s, const Vec3&
     if (walls_[s])
         return walls_[s]->firstTouch(centre, centre, radius,
                                      [](double, const Vec3&) { return true; });
-    const Surface& plane = scene_.surfaces[s];
+    const Surface& plane = surfaces_[s];
     const double height = (centre - plane.point).dot(plane.normal);
     if (height >= radius) return std::nullopt;
     return PatchTouch{0, plane.normal, plane.point};
@@ -109,7 +114,7 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     Vec3 contactVelocity = Vec3::Zero();
     Vec3 wallNormal = Vec3::UnitX(), wallPoint = Vec3::Zero(); // the touched plane
     for (const std::size_t s : metAtTouch_) {
-        const Surface& plane = scene_.surfaces[s];
+        const Surface& plane = surfaces_[s];
         // A sink takes whatever touches it, as before collisions existed.
         const auto meeting = [&](double touch, const Vec3& normal) {
             return plane.interaction == SurfaceInteraction::absorb
@@ -147,7 +152,7 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     }
     if (surface < 0) return ImpactResult::none;
 
-    const Surface& plane = scene_.surfaces[static_cast<std::size_t>(surface)];
+    const Surface& plane = surfaces_[static_cast<std::size_t>(surface)];
     const Vec3 normal =
         onDeposit ? (centreAt(fraction) - deposit_.position(depositTouch->particle)).normalized()
                   : wallNormal;
@@ -174,16 +179,16 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (plane.interaction == SurfaceInteraction::absorb) return arrive();
 
     const double normalSpeed = -contactVelocity.dot(normal);
-    const double mass = sphereMass(radius, scene_.particles.density);
-    const MaterialSettings& particleMaterial = scene_.particles.material;
+    const double mass = sphereMass(radius, particles_.density);
+    const MaterialSettings& particleMaterial = particles_.material;
     const ContactBody particle{mass, radius, &particleMaterial};
     const ContactPair pair =
         onDeposit ? contactPair(particle, {INFINITY, deposit_.radius(depositTouch->particle),
                                            &particleMaterial})
                   : contactPair(particle, {INFINITY, INFINITY, &plane.material});
-    const RestitutionSettings& restitution = scene_.collisions.restitution;
+    const RestitutionSettings& restitution = collisions_.restitution;
     if (plane.interaction == SurfaceInteraction::deposit &&
-        sticks(scene_.deposition, restitution, pair, normalSpeed)) {
+        sticks(deposition_, restitution, pair, normalSpeed)) {
         deposit_.add(centre, radius, surface);
         return arrive();
     }
@@ -191,12 +196,12 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     ImpactBody body{contactVelocity, cloud.angularVelocity[i], 1 / mass, radius};
     ImpactBody rigid;
     const double e = restitutionCoefficient(restitution, pair, normalSpeed);
-    const Vec3 impulse = contactImpulse(body, rigid, normal, e, scene_.collisions.friction);
+    const Vec3 impulse = contactImpulse(body, rigid, normal, e, collisions_.friction);
     const double energyBefore = kineticEnergy(body);
     applyImpulse(body, rigid, normal, impulse);
     if (heats())
         cloud.temperature[i] += collisionalTemperatureRise(energyBefore - kineticEnergy(body),
-                                                           scene_.particles.specificHeat, mass);
+                                                           particles_.specificHeat, mass);
     const Vec3 change = body.velocity - contactVelocity;
     const double remaining = (1 - fraction) * path.length;
     v += change;

@@ -25,11 +25,15 @@
 //     surfaces { target { type plane; point (0.06 0 0); normal (-1 0 0); interaction deposit; } }
 #pragma once
 
-#include "slides/config/scene.h"
+#include "slides/carrier/carrier_field.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/injection_settings.h"
+#include "slides/physics/adhesion.h"
+#include "slides/physics/heat_transfer.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit.h"
 #include "slides/surfaces/patch_wall.h"
+#include "slides/surfaces/surface_settings.h"
 
 #include <cstdint>
 #include <optional>
@@ -49,8 +53,12 @@ struct StepTemperature {
 
 class SurfaceImpacts {
 public:
-    /// The carrier gives the triangles of the surfaces of type patch.
-    SurfaceImpacts(const Scene& scene, const CarrierField& carrier);
+    /// Collisions give restitution, friction and which surfaces are soft walls; deposition the
+    /// adhesion of deposit surfaces; heatTransfer whether temperatures are tracked. The carrier
+    /// gives the triangles of the surfaces of type patch.
+    SurfaceImpacts(const std::vector<Surface>& surfaces, const CollisionSettings& collisions,
+                   const AdhesionSettings& deposition, const ParticleSettings& particles,
+                   HeatTransferModel heatTransfer, const CarrierField& carrier);
 
     /// Meets particle i, which flew from start (velocity startVelocity) to its current state
     /// over stepLength, ending at time stepEnd (with heat transfer, its temperature over the
@@ -102,13 +110,15 @@ private:
 
     /// Whether impulse contacts heat the particles (Eq. 2.117): collisions.heating, with the
     /// temperatures that heat transfer tracks.
-    bool heats() const {
-        return scene_.collisions.heating && scene_.physics.heatTransfer != HeatTransferModel::none;
-    }
+    bool heats() const { return collisions_.heating && heatTransfer_ != HeatTransferModel::none; }
     /// Contacts followed in one step; a particle still bouncing after them flies on.
     static constexpr int maxContactsPerStep = 4;
 
-    const Scene& scene_;
+    std::vector<Surface> surfaces_;
+    CollisionSettings collisions_;
+    AdhesionSettings deposition_;
+    ParticleSettings particles_;
+    HeatTransferModel heatTransfer_;
     std::vector<std::optional<PatchWall>> walls_; ///< per surface: its patch, if it is one
     std::vector<std::size_t> metAtTouch_; ///< the surfaces met here, at the touch: not soft walls
     Deposit deposit_;

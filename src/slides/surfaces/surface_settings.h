@@ -10,7 +10,9 @@
 #include "slides/core/vector.h"
 #include "slides/physics/contact_pair.h"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace slides {
 
@@ -24,5 +26,15 @@ struct Surface {
     SurfaceInteraction interaction = SurfaceInteraction::absorb;
     std::string patch; ///< the mesh patch it is; empty for a plane
 };
+
+/// Whether the particles carry a spin ω: the spin term (physics.spin), or contacts with friction
+/// that change it (collisions, surfaces that rebound or deposit).
+inline bool tracksSpin(bool spinTerm, const CollisionSettings& collisions,
+                       const std::vector<Surface>& surfaces) {
+    return spinTerm || collisions.model != CollisionModel::none ||
+           std::any_of(surfaces.begin(), surfaces.end(), [](const Surface& s) {
+               return s.interaction != SurfaceInteraction::absorb;
+           });
+}
 
 } // namespace slides
