@@ -91,9 +91,11 @@ void describeRun(const slides::Scene& scene, const slides::CarrierField& carrier
 int run(const Options& options) {
     slides::Scene scene = slides::readScene(options.caseDirectory);
     applyOverrides(options, scene);
-    const auto carrier = slides::makeCarrier(scene);
+    const auto carrier = slides::makeCarrier(scene.carrier, scene.nozzle, scene.fluid.temperature,
+                                             scene.physics.carrierNeeds(), scene.caseDirectory,
+                                             scene.dictionaryFile);
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
-    slides::placePatchSurfaces(scene, *carrier);
+    scene.surfaces = slides::placePatchSurfaces(scene.surfaces, *carrier, scene.dictionaryFile);
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     omp_set_num_threads(threads);
     const slides::SceneAnalysis analysis = slides::analyseScene(scene, *carrier);

@@ -2,8 +2,8 @@
 // Injection into an OpenFOAM carrier: the cell the injector's search finds is kept in the cloud
 // (CarrierField::sampleFrom), so the first step walks from it instead of searching again; on the
 // 5° wedge OpenFOAM wrote (tests/foam/data/wedge) with a uniform stream, tracked in 3-D.
+#include "../support/test_scenes.h"
 #include "slides/carrier/foam_carrier.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/injector.h"
 
@@ -53,7 +53,7 @@ std::filesystem::path wedgeStreamCase(int count) {
 TEST(FoamInjection, KeepsTheCellItsSearchFound) {
     const auto directory = wedgeStreamCase(500);
     const Scene scene = readScene(directory);
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     const auto& foam = dynamic_cast<const FoamCarrier&>(*carrier);
     Injector injector(scene.injection, scene.nozzle, scene.particles);
     ParticleCloud cloud;

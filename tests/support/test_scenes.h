@@ -2,8 +2,10 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/carrier/make_carrier.h"
 #include "slides/config/scene.h"
 
+#include <memory>
 #include <string>
 
 namespace slides::test {
@@ -27,6 +29,12 @@ inline Scene singleParticleScene() {
     scene.domain = {Vec3::Constant(-1e6), Vec3::Constant(1e6)};
     scene.output.interval = 1.0;
     return scene;
+}
+
+/// The scene's carrier, built from the parts of the scene that makeCarrier takes.
+inline std::unique_ptr<CarrierField> carrierOf(const Scene& scene) {
+    return makeCarrier(scene.carrier, scene.nozzle, scene.fluid.temperature,
+                       scene.physics.carrierNeeds(), scene.caseDirectory, scene.dictionaryFile);
 }
 
 /// U = constant.

@@ -4,7 +4,6 @@
 // the default case and on broken cases (exit status 2, one message naming file, line, key).
 #include "../support/case_runs.h"
 #include "../support/test_scenes.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_keys.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/injector.h"
@@ -41,7 +40,7 @@ Finished runDefaultCase(int threads, std::uint64_t seed) {
     scene.particles.count = 600;
     scene.injection.seed = seed;
     scene.time.endTime = 2e-3; // particles still in flight, some arrived
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     omp_set_num_threads(threads);
     Stepper stepper(scene, *carrier);
     while (!stepper.finished()) stepper.step();
@@ -116,7 +115,7 @@ TEST(Injection, LogNormalMedianAndTruncation) {
 TEST(Injection, StartsOnTheNozzleDiscWithGasPlusCrossSpanVelocity) {
     Scene scene = readScene(defaultCase);
     scene.injection.mode = InjectionMode::allAtStart;
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     Injector injector(scene.injection, scene.nozzle, scene.particles);
     ParticleCloud cloud;
     injector.injectUntil(0.0 + 1e-12, 0.0, *carrier, cloud);

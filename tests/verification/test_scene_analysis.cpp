@@ -16,8 +16,8 @@
 //    threshold, 30 times).
 //  - The time step the analysis picks is accurate: against a run at an eighth of it, impact
 //    velocities agree to a tenth of threshold × U_ref.
+#include "../support/test_scenes.h"
 #include "slides/analysis/scene_analysis.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/stepper.h"
@@ -129,7 +129,7 @@ class SceneAnalysisOf : public ::testing::TestWithParam<ContrastingScene> {
 protected:
     void SetUp() override {
         scene_ = readContrastingScene(GetParam());
-        carrier_ = makeCarrier(scene_);
+        carrier_ = test::carrierOf(scene_);
         analysis_ = analyseScene(scene_, *carrier_);
         resolved_ = scene_;
         applyAnalysis(analysis_, resolved_);

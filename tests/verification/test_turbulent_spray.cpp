@@ -7,7 +7,7 @@
 //    θf < θ ≤ θf + (θ0 − θf) e^(−(t − t_in)/τ_θ(Nu = 2)).
 //  - Output: frames carry a temperature array, the summary arrival temperature statistics.
 //  - Dispersion without k, ε for the analytic jet is an input error naming the key.
-#include "slides/carrier/make_carrier.h"
+#include "../support/test_scenes.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
@@ -57,7 +57,7 @@ const std::string dispersionAndHeat = "    dispersion { model eddyInteraction; }
 
 /// Arrivals of a whole run.
 std::vector<Arrival> run(const Scene& scene) {
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     Stepper stepper(scene, *carrier);
     while (!stepper.finished()) stepper.step();
     return stepper.arrivals();
@@ -101,7 +101,7 @@ TEST(TurbulentSpray, DispersionWidensTheDepositAndHeatingStaysWithinItsBounds) {
 TEST(TurbulentSpray, FramesAndSummaryCarryTheTemperature) {
     Scene scene = sprayScene(dispersionAndHeat, jetTurbulence);
     scene.output.carrierResolution = {4, 4, 4};
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     Stepper stepper(scene, *carrier);
     const auto directory = std::filesystem::temp_directory_path() /
                            ("slides-turbulent-spray-" + std::to_string(::getpid()));

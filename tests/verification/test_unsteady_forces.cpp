@@ -6,7 +6,6 @@
 // default physics leaves the cloud without model state; the dictionary keys reach the Scene; the
 // full equation on the default jet gives the same particles on 1 and 2 threads.
 #include "../support/test_scenes.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 #include "slides/integrate/stepper.h"
@@ -304,7 +303,7 @@ void expectSameOnOneAndTwoThreads(const std::string& physics) {
     scene.particles.count = 400;
     scene.injection.mode = InjectionMode::allAtStart;
     scene.time.endTime = 5e-4;
-    const auto carrier = makeCarrier(scene);
+    const auto carrier = test::carrierOf(scene);
     std::vector<std::vector<Vec3>> velocities;
     for (const int threads : {1, 2}) {
         omp_set_num_threads(threads);

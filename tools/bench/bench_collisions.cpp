@@ -9,8 +9,8 @@
 //     build/tools/bench/bench_collisions --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; times of one run compare: collide against
 // stepWithoutCollisions for the cost of collisions, broadPhase against collide for its share.
+#include "../../tests/support/test_scenes.h"
 #include "bench_scene.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/collide/cell_grid.h"
 #include "slides/collide/particle_collisions.h"
 #include "slides/integrate/stepper.h"
@@ -97,7 +97,7 @@ void broadPhase(benchmark::State& state) {
 /// `collide`.
 void stepWithoutCollisions(benchmark::State& state) {
     const slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
-    const auto carrier = slides::makeCarrier(scene);
+    const auto carrier = slides::test::carrierOf(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone
     for (auto _ : state) stepper.step();

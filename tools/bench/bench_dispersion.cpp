@@ -7,7 +7,7 @@
 //     build/tools/bench/bench_dispersion --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; compare the rows of one run (ratio to
 // "dragOnly"), not figures across runs.
-#include "slides/carrier/make_carrier.h"
+#include "../../tests/support/test_scenes.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/stepper.h"
 
@@ -38,7 +38,7 @@ void dispersionCost(benchmark::State& state) {
         scene.particles.specificHeat = 460;
         scene.particles.injectionTemperature = 600;
     }
-    const auto carrier = slides::makeCarrier(scene);
+    const auto carrier = slides::test::carrierOf(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone
     for (auto _ : state) stepper.step();

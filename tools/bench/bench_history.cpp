@@ -7,8 +7,8 @@
 //     build/tools/bench/bench_history --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second; bytes_per_particle counts the kinematic arrays
 // (id, x, v, R) plus the model state. Compare the rows of one run as ratios.
+#include "../../tests/support/test_scenes.h"
 #include "bench_scene.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/integrate/stepper.h"
 
 #include <benchmark/benchmark.h>
@@ -33,7 +33,7 @@ void unsteadyCost(benchmark::State& state) {
         physics.lift = slides::LiftModel::saffmanMeiMagnus;
     }
     physics.spinHistory = variant == fullWithSpinHistory;
-    const auto carrier = slides::makeCarrier(scene);
+    const auto carrier = slides::test::carrierOf(scene);
     slides::Stepper stepper(scene, *carrier);
     // Injects everyone, then 100 steps: past the first 64 intervals of a release with slip,
     // where the finite-Reynolds memories weight ℓ_c per part (one κ more per tail term).

@@ -3,8 +3,8 @@
 //
 //     build/tools/bench/bench_stepper --benchmark_counters_tabular=true
 // items_per_second is particle-steps per second.
+#include "../../tests/support/test_scenes.h"
 #include "bench_scene.h"
-#include "slides/carrier/make_carrier.h"
 #include "slides/integrate/stepper.h"
 
 #include <benchmark/benchmark.h>
@@ -15,7 +15,7 @@ void stepperThroughput(benchmark::State& state) {
     slides::Scene scene = slides::bench::particlesInFlight(state.range(0));
     const auto integrator = slides::integratorNames()[static_cast<std::size_t>(state.range(1))];
     scene.time.integrator = integrator.value;
-    const auto carrier = slides::makeCarrier(scene);
+    const auto carrier = slides::test::carrierOf(scene);
     slides::Stepper stepper(scene, *carrier);
     stepper.step(); // injects everyone
     for (auto _ : state) stepper.step();

@@ -15,48 +15,50 @@ namespace slides {
 namespace {
 
 /// Particles injected outside the mesh would escape at once: refuse such a case.
-void requireNozzleInMesh(const Scene& scene, const FoamCarrier& carrier) {
-    const std::array<Vec3, 1> centre{scene.nozzle.centre};
+void requireNozzleInMesh(const JetNozzle& nozzle, const FoamCarrier& carrier,
+                         const std::filesystem::path& dictionaryFile) {
+    const std::array<Vec3, 1> centre{nozzle.centre};
     std::array<std::int32_t, 1> location{-1};
     CarrierSample sample;
     carrier.sampleFrom(centre, location, 0.0, CarrierNeeds{}, sample);
     if (location[0] < -1) {
-        const Vec3& x = scene.nozzle.centre;
+        const Vec3& x = nozzle.centre;
         std::ostringstream message;
         message << "(" << x.x() << " " << x.y() << " " << x.z()
                 << ") lies outside the OpenFOAM mesh: particles would be injected outside it";
-        throw InputError(scene.dictionaryFile.string(), 0, "nozzle.centre", message.str());
+        throw InputError(dictionaryFile.string(), 0, "nozzle.centre", message.str());
     }
 }
 
 } // namespace
 
-std::unique_ptr<CarrierField> makeCarrier(const Scene& scene) {
-    const CarrierSettings& carrier = scene.carrier;
-    // k, ε and T only for a scene whose models ask for them; otherwise the bare jet.
-    const bool needsScalars = scene.physics.dispersion != DispersionModel::none ||
-                              scene.physics.heatTransfer != HeatTransferModel::none;
+std::unique_ptr<CarrierField> makeCarrier(const CarrierSettings& carrier, const JetNozzle& nozzle,
+                                          double gasTemperature, CarrierNeeds needs,
+                                          const std::filesystem::path& caseDirectory,
+                                          const std::filesystem::path& dictionaryFile) {
+    // k, ε and T only for models that ask for them; otherwise the bare jet.
+    const bool needsScalars = needs.turbulence || needs.temperature;
     const auto withScalars = [&]<typename Jet>(std::unique_ptr<Jet> jet) {
         if (!needsScalars) return std::unique_ptr<CarrierField>(std::move(jet));
-        return std::unique_ptr<CarrierField>(std::make_unique<JetScalars<Jet>>(
-            std::move(jet), carrier.turbulence, scene.fluid.temperature));
+        return std::unique_ptr<CarrierField>(
+            std::make_unique<JetScalars<Jet>>(std::move(jet), carrier.turbulence, gasTemperature));
     };
     switch (carrier.type) {
     case CarrierType::none: return std::make_unique<NoGas>();
     case CarrierType::analyticJet:
         return withScalars(std::make_unique<AnalyticJet>(
-            scene.nozzle,
+            nozzle,
             AnalyticJetParameters{carrier.profile, carrier.nozzleVelocity, carrier.viscosity,
                                   carrier.coreLength, carrier.C1, carrier.C2, carrier.C3}));
     case CarrierType::roundLaminarJet:
         return withScalars(std::make_unique<RoundLaminarJet>(
-            scene.nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
-                                                    carrier.coreLength}));
+            nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
+                                              carrier.coreLength}));
     case CarrierType::foamField: {
         auto field = std::make_unique<FoamCarrier>(
-            scene.caseDirectory,
+            caseDirectory,
             FoamCarrierSettings{carrier.foamTime, carrier.interpolation, carrier.latticeSpacing});
-        requireNozzleInMesh(scene, *field);
+        requireNozzleInMesh(nozzle, *field, dictionaryFile);
         return field;
     }
     }

@@ -20,9 +20,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
       injector_(scene.injection, scene.nozzle, scene.particles),
-      needs_{.turbulence = scene.physics.dispersion != DispersionModel::none,
-             .temperature = scene.physics.heatTransfer != HeatTransferModel::none},
-      dispersion_(scene.physics, scene.injection.seed),
+      needs_(scene.physics.carrierNeeds()), dispersion_(scene.physics, scene.injection.seed),
       heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
       surfaces_(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
                 scene.physics.heatTransfer, carrier) {

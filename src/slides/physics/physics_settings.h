@@ -8,6 +8,7 @@
 //               autoThreshold 0.01; }
 #pragma once
 
+#include "slides/carrier/carrier_field.h"
 #include "slides/core/vector.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
@@ -44,6 +45,12 @@ struct PhysicsSettings {
     bool unsteadyForces() const {
         return history != HistoryModel::none || addedMass || pressureGradient ||
                lift != LiftModel::none || spin;
+    }
+    /// What the terms ask of the carrier beside U: k and ε for dispersion, T for heat transfer
+    /// (∇U is the Maxey–Riley step's, integrate/maxey_riley.h).
+    CarrierNeeds carrierNeeds() const {
+        return {.turbulence = dispersion != DispersionModel::none,
+                .temperature = heatTransfer != HeatTransferModel::none};
     }
 };
 

@@ -81,20 +81,21 @@ std::optional<double> PatchWall::touchFraction(std::size_t k, const Vec3& start,
     return fraction;
 }
 
-void placePatchSurfaces(Scene& scene, const CarrierField& carrier) {
-    for (Surface& surface : scene.surfaces) {
+std::vector<Surface> placePatchSurfaces(std::vector<Surface> surfaces, const CarrierField& carrier,
+                                        const std::filesystem::path& dictionaryFile) {
+    for (Surface& surface : surfaces) {
         if (surface.patch.empty()) continue;
         const PatchWall wall(carrier.patchTriangles(surface.patch));
         const bool deposits = surface.interaction == SurfaceInteraction::deposit;
         if (deposits && !(wall.meanNormal().norm() > 0))
-            throw InputError(scene.dictionaryFile.string(), 0,
-                             "surfaces." + surface.name + ".patch",
+            throw InputError(dictionaryFile.string(), 0, "surfaces." + surface.name + ".patch",
                              "patch '" + surface.patch +
                                  "' has no mean direction (its face normals cancel): the "
                                  "deposit's height and map need one; split the patch");
         surface.point = wall.centroid();
         if (wall.meanNormal().norm() > 0) surface.normal = wall.meanNormal();
     }
+    return surfaces;
 }
 
 } // namespace slides

@@ -18,8 +18,9 @@
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/collide/cell_grid.h"
-#include "slides/config/scene.h"
+#include "slides/surfaces/surface_settings.h"
 
+#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -82,9 +83,10 @@ private:
     std::vector<SizeClass> classes_;
 };
 
-/// Sets each patch surface's point and normal to its patch's mean plane (for the deposit's
-/// metrics and map). InputError at surfaces.NAME.patch for a patch without a mean direction
-/// (a closed one, whose face normals cancel).
-void placePatchSurfaces(Scene& scene, const CarrierField& carrier);
+/// The surfaces with each patch surface's point and normal set to its patch's mean plane (for
+/// the deposit's metrics and map). InputError in dictionaryFile at surfaces.NAME.patch for a
+/// deposit patch without a mean direction (a closed one, whose face normals cancel).
+std::vector<Surface> placePatchSurfaces(std::vector<Surface> surfaces, const CarrierField& carrier,
+                                        const std::filesystem::path& dictionaryFile);
 
 } // namespace slides
