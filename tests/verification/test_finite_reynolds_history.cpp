@@ -74,7 +74,8 @@ struct WindowTailRun {
     std::vector<double> state;
     FiniteReynoldsWindowTail memory;
     WindowTailRun(const SlipKernel& kernel, double h, double horizon, double accuracy)
-        : layout(FiniteReynoldsLayout::make(WindowTailLayout::make(h, horizon, accuracy), horizon)),
+        : layout(FiniteReynoldsLayout::make(
+              WindowTailLayout::make(h, horizon, accuracy, LowRates::truncated), horizon)),
           state(layout.doubles()), memory(layout, state.data(), kernel) {
         memory.start(slipAt(0), kernel.crossover(slipAt(0)));
     }
@@ -173,8 +174,8 @@ Vec3 finalVelocity(const FiniteReynoldsShape& shape, Memory kind, bool stream, l
     const Vec3 releaseSlip = c.gasAt(0, stream) - v;
     const double jump = kernel.crossover(releaseSlip);
     FiniteReynoldsFullHistory full(kernel, releaseSlip, jump);
-    const FiniteReynoldsLayout layout =
-        FiniteReynoldsLayout::make(WindowTailLayout::make(h, c.endTime, 1e-6), c.endTime);
+    const FiniteReynoldsLayout layout = FiniteReynoldsLayout::make(
+        WindowTailLayout::make(h, c.endTime, 1e-6, LowRates::truncated), c.endTime);
     std::vector<double> state(layout.doubles());
     FiniteReynoldsWindowTail windowTail(layout, state.data(), kernel);
     windowTail.start(releaseSlip, jump);

@@ -214,7 +214,8 @@ TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
     // relative error ≤ 1e-3 bounds the history term's error by 1e-3 of itself, and the history
     // term is at most the slip scale (0.3 m/s here, and the terminal slip ≈ 1.3 m/s), so the
     // velocity stays within 1e-3 × 1.3 m/s of the erfc solution; the discretisation error at this
-    // step is ~1e-7 (the orders above). Memory: a fixed number of doubles per particle.
+    // step is ~1e-7 (the orders above). Memory: a fixed number of doubles per particle, 16
+    // terms over these five decades of lag with the lowest rates lumped into one (29 without).
     const Case& c = light;
     const double h = 1.0 / c.dragRate() / 200;
     const long steps = 100000;
@@ -222,7 +223,7 @@ TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
     const WindowTailLayout layout = WindowTailLayout::make(h, h * steps, accuracy);
     std::printf("window %d steps, %zu exponential terms, %zu bytes per particle\n", layout.window,
                 layout.tail.size(), layout.doubles() * sizeof(double));
-    EXPECT_LE(layout.doubles(), 3u * 40u);
+    EXPECT_LE(layout.tail.size(), 16u);
     const double error = maxError(Scheme::windowTail, c, 0.3, c.gravity(), h, steps, accuracy);
     const double terminalSlip = std::abs(c.gravity() / c.dragRate());
     std::printf("max error over %ld steps: %.3e m/s (%.2e of the terminal slip)\n", steps, error,

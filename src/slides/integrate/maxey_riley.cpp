@@ -25,8 +25,11 @@ MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const Fluid
     history_ = physics.history != HistoryModel::none;
     spinHistory_ = physics.spin && physics.spinHistory;
     if (!history_ && !spinHistory_) return;
-    memory_ = WindowTailLayout::make(time.dt, time.endTime, physics.historyAccuracy);
-    if (physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim) {
+    const bool finiteReynolds =
+        physics.history == HistoryModel::meiAdrian || physics.history == HistoryModel::kim;
+    memory_ = WindowTailLayout::make(time.dt, time.endTime, physics.historyAccuracy,
+                                     finiteReynolds ? LowRates::truncated : LowRates::lumped);
+    if (finiteReynolds) {
         finiteReynolds_ = FiniteReynoldsLayout::make(*memory_, time.endTime);
         finiteReynoldsTables_ = &FiniteReynoldsKernel::of(
             physics.history == HistoryModel::kim ? kimShape : meiAdrianShape);

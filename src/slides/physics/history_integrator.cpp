@@ -167,26 +167,73 @@ EndWeights tailEntryWeights(double amplitude, double theta, double windowLength,
 
 } // namespace
 
-ExponentialSum ExponentialSum::fit(double window, double horizon, double accuracy) {
+namespace {
+
+/// The nodes of the trapezoid sum below its lowest one, x_k = x_0 e^{−kΔy} with amplitudes
+/// a_0 e^{−kΔy/2} (k ≥ 1), lumped into one term of their total amplitude at their mean rate: for
+/// x_0 ℓ small they act as one (the error is second order in x_0 ℓ), so the sum need not reach
+/// the rates x ~ accuracy²/horizon that truncating them there would need.
+struct LumpedNodes {
+    double amplitude, rate;
+
+    LumpedNodes(double lowestAmplitude, double lowestRate, double stepY) {
+        const double r = std::exp(-0.5 * stepY), q = std::exp(-stepY);
+        amplitude = lowestAmplitude * r / (1 - r);
+        rate = lowestRate * q * (1 - r) / (1 - r * q);
+    }
+    /// Relative error against the nodes it stands for, at lag ℓ (their sum to 1e-17).
+    static double error(double lowestAmplitude, double lowestRate, double stepY, double lag) {
+        const LumpedNodes lumped(lowestAmplitude, lowestRate, stepY);
+        double exact = 0, amplitude = lowestAmplitude, rate = lowestRate;
+        for (int k = 1; amplitude > 1e-17 * lowestAmplitude; ++k) {
+            amplitude *= std::exp(-0.5 * stepY);
+            rate *= std::exp(-stepY);
+            exact += amplitude * std::exp(-rate * lag);
+        }
+        return std::abs(exact - lumped.amplitude * std::exp(-lumped.rate * lag)) * std::sqrt(lag);
+    }
+};
+
+} // namespace
+
+ExponentialSum ExponentialSum::fit(double window, double horizon, double accuracy,
+                                   LowRates lowRates) {
     // Three error sources, each held to accuracy/3 relative to 1/√ℓ on [window, horizon]:
     //  - trapezoid step Δy: aliasing error 2√2 e^{−π²/Δy} (the integrand is analytic in the
     //    strip |Im y| < π/2);
     //  - nodes beyond x_max = X/window: relative error erfc(√(X)) for ℓ ≥ window;
-    //  - nodes below x_min: relative error erf(√(x_min ℓ)) ≈ 2√(x_min ℓ/π) for ℓ ≤ horizon.
+    //  - nodes below the lowest one, x_min: lumped into one term (LumpedNodes), its error
+    //    growing with ℓ, so measured at ℓ = horizon and at ten lags per decade below it; or
+    //    (LowRates::truncated) left out, relative error erf(√(x_min ℓ)) ≈ 2√(x_min ℓ/π).
     const double part = accuracy / 3.0;
     const double stepY =
         std::numbers::pi * std::numbers::pi / std::log(2.0 * std::sqrt(2.0) / part);
     double upper = 1.0;
     while (std::erfc(std::sqrt(upper)) > part) upper *= 1.1;
-    const double xMax = upper / window;
-    const double xMin = std::pow(part * rootPi / 2.0, 2) / std::max(horizon, window);
-    const auto count = static_cast<std::size_t>(std::ceil(std::log(xMax / xMin) / stepY)) + 1;
+    const double longest = std::max(horizon, window);
+    const auto amplitudeAt = [&](double y) { return stepY * std::exp(0.5 * y) / rootPi; };
+    const auto lumpedError = [&](double y) {
+        double worst = 0;
+        for (double lag = longest; lag >= window; lag /= 1.2589254117941673) // 10 a decade
+            worst = std::max(worst, LumpedNodes::error(amplitudeAt(y), std::exp(y), stepY, lag));
+        return worst;
+    };
+    double lowestY = std::log(upper / window);
+    if (lowRates == LowRates::truncated) {
+        const double xMin = std::pow(part * rootPi / 2.0, 2) / longest;
+        lowestY -= std::ceil((lowestY - std::log(xMin)) / stepY) * stepY;
+    } else {
+        while (lumpedError(lowestY) > part) lowestY -= stepY;
+    }
     ExponentialSum sum;
-    for (std::size_t i = 0; i < count; ++i) {
-        const double y = std::log(xMin) + static_cast<double>(i) * stepY;
-        sum.amplitude.push_back(stepY * std::exp(0.5 * y) / rootPi);
+    for (double y = lowestY; y <= std::log(upper / window) + 0.5 * stepY; y += stepY) {
+        sum.amplitude.push_back(amplitudeAt(y));
         sum.timescale.push_back(std::exp(-y));
     }
+    if (lowRates == LowRates::truncated) return sum;
+    const LumpedNodes lumped(amplitudeAt(lowestY), std::exp(lowestY), stepY);
+    sum.amplitude.push_back(lumped.amplitude);
+    sum.timescale.push_back(1 / lumped.rate);
     return sum;
 }
 
@@ -229,7 +276,8 @@ Vec3 FullHistory::beginStep(double stepLength) {
     return sum;
 }
 
-WindowTailLayout WindowTailLayout::make(double h, double horizon, double accuracy) {
+WindowTailLayout WindowTailLayout::make(double h, double horizon, double accuracy,
+                                        LowRates lowRates) {
     WindowTailLayout layout;
     layout.h = h;
     // The tail integrates ρ piecewise linear against each exponential exactly, so the window
@@ -241,7 +289,7 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
     layout.window =
         std::clamp(static_cast<int>(std::lround(1.0 / stepY)), 1, WindowTailHistory::largestWindow);
     const double windowLength = layout.window * h;
-    layout.tail = ExponentialSum::fit(windowLength, horizon, accuracy);
+    layout.tail = ExponentialSum::fit(windowLength, horizon, accuracy, lowRates);
     const double rootH = std::sqrt(h);
     for (int k = 0; k < layout.window; ++k)
         layout.windowWeights.push_back(rootH * productWeight(2, k));

@@ -99,13 +99,20 @@ struct FirstStepWeights {
 };
 FirstStepWeights firstStepWeights(int order, double lag, double firstStep, HistoryKernel kernel);
 
+/// The rates of an exponential sum below its lowest node: lumped into one term (the sum of
+/// Basset's kernel) or left out (the finite-Reynolds memories, which weigh each term by its
+/// spectrum ratio and integrate it to the horizon, physics/finite_reynolds_history.h).
+enum class LowRates { lumped, truncated };
+
 /// 1/√ℓ ≈ Σ_i amplitude_i e^{−ℓ/timescale_i} for ℓ in [window, horizon] with relative error
-/// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx.
+/// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx, its nodes
+/// below the lowest one lumped into one last term.
 struct ExponentialSum {
     std::vector<double> amplitude; ///< [1/√s]
     std::vector<double> timescale; ///< [s]
 
-    static ExponentialSum fit(double window, double horizon, double accuracy);
+    static ExponentialSum fit(double window, double horizon, double accuracy,
+                              LowRates lowRates = LowRates::lumped);
     double operator()(double lag) const;
     std::size_t size() const { return amplitude.size(); }
 };
@@ -169,7 +176,8 @@ struct WindowTailLayout {
     std::vector<double> tailDecay, tailNewWeight, tailOldWeight; ///< per term, for one step
 
     /// Window and terms from the accuracy target (relative kernel error) for ages up to horizon.
-    static WindowTailLayout make(double h, double horizon, double accuracy);
+    static WindowTailLayout make(double h, double horizon, double accuracy,
+                                 LowRates lowRates = LowRates::lumped);
     /// Doubles per particle: ρ at lags 0 … window and one tail sum per term, 3 components each;
     /// the first step's length and the steps taken.
     std::size_t doubles() const { return 3 * (window + 1 + tail.size()) + 2; }
