@@ -13,7 +13,7 @@
 #include "slides/core/name_table.h"
 #include "slides/core/thread_waits.h"
 #include "slides/integrate/mean_response_time.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
 #include "slides/io/progress.h"

@@ -6,7 +6,7 @@
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/physics/contact_pair.h"
 #include "slides/physics/soft_contact.h"
 

@@ -11,7 +11,7 @@
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/io/run_output.h"
 #include "slides/io/summary.h"
 

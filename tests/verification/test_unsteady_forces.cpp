@@ -9,7 +9,7 @@
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/spin.h"

@@ -9,7 +9,7 @@
 // "dragOnly"), not figures across runs.
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

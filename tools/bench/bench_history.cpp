@@ -9,7 +9,7 @@
 // (id, x, v, R) plus the model state. Compare the rows of one run as ratios.
 #include "bench_scene.h"
 #include "slides/carrier/make_carrier.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

@@ -5,7 +5,7 @@
 // items_per_second is particle-steps per second.
 #include "bench_scene.h"
 #include "slides/carrier/make_carrier.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

@@ -13,7 +13,7 @@
 // datasets carry Fletcher-32 checksums, so a damaged file is refused rather than resumed.
 #pragma once
 
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/io/frame_record.h"
 #include "slides/io/run_output.h"
 

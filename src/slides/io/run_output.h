@@ -15,7 +15,7 @@
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/config/scene.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 #include "slides/io/frame_record.h"
 #include "slides/io/hdf5_particles.h"
 #include "slides/io/pvd_series.h"

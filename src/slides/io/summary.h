@@ -6,7 +6,7 @@
 
 #include "slides/analysis/scene_analysis.h"
 #include "slides/config/scene.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include "slides/core/parallel.h"
 #include "slides/integrate/relaxation_batch.h"
