@@ -4,8 +4,8 @@
 // in turn, the reported carrier.type and injection.mode are the dictionary's words. (The
 // summary once reported carrier `none` as "foamField" and injection `lattice` as "allAtStart".)
 #include "slides/config/dictionary.h"
+#include "slides/config/scene_json.h"
 #include "slides/config/scene_reader.h"
-#include "slides/io/summary.h"
 
 #include "../support/case_runs.h"
 

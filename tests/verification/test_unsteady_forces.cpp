@@ -9,10 +9,10 @@
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/run/stepper.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/spin.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

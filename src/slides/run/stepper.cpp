@@ -47,12 +47,18 @@ long Stepper::collisions() const {
     return softSpheres_ ? softSpheres_->collisions() : 0;
 }
 
-StepperCounters Stepper::counters() const {
+RunCounters Stepper::counters() const {
     return {time_,          steps_,          injector_.injected(), escaped_,
             particleSteps_, escapedThrough_, collisions(),         surfaces_.rebounds()};
 }
 
-void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
+RunSnapshot Stepper::snapshot() const {
+    std::optional<long> listBuilds;
+    if (softSpheres_) listBuilds = softSpheres_->listBuilds();
+    return {counters(), cloud_, arrivals_, listBuilds};
+}
+
+void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
                      std::vector<Arrival> arrivals, std::vector<ContactSpring> springs) {
     time_ = counters.time;
     steps_ = counters.steps;
@@ -239,20 +245,20 @@ void Stepper::meetSurfaces(double h) {
     // In parallel, the particles that only fly on: finite, in the box and the mesh, their path
     // touching no surface; the rest are met one by one in order (arrivals, deposit, removal).
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
-    std::vector<std::uint8_t> fliesOn(cloud_.size());
+    fliesOn_.resize(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const Vec3& x = cloud_.position[i];
-        fliesOn[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
-                     insideBox(scene_.domain, x) &&
-                     (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
-                     (!surfaces_.meetsAtTouch() ||
-                      !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]));
+        fliesOn_[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
+                      insideBox(scene_.domain, x) &&
+                      (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
+                      (!surfaces_.meetsAtTouch() ||
+                       !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]));
     }
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
-        if (fliesOn[i]) continue;
+        if (fliesOn_[i]) continue;
         const Vec3& x = cloud_.position[i];
         const Vec3& v = cloud_.velocity[i];
         if (!x.allFinite() || !v.allFinite()) {

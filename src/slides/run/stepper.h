@@ -40,6 +40,7 @@
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
 #include "slides/integrate/turbulent_dispersion.h"
+#include "slides/io/run_snapshot.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/surface_impacts.h"
@@ -49,19 +50,6 @@
 #include <vector>
 
 namespace slides {
-
-/// What a checkpoint holds of a stepper besides its cloud and arrivals (io/checkpoint.h).
-struct StepperCounters {
-    double time = 0; ///< [s]
-    long steps = 0;
-    long injected = 0;
-    long escaped = 0;
-    std::uint64_t particleSteps = 0;
-    /// Escapes by exit: [0] the domain box (or a patch not known), [1 + p] carrier patch p.
-    std::vector<std::uint64_t> escapedThrough;
-    long collisions = 0;                 ///< particle–particle contacts
-    std::vector<std::uint64_t> rebounds; ///< per surface
-};
 
 class Stepper {
 public:
@@ -80,7 +68,7 @@ public:
     std::uint64_t particleSteps() const { return particleSteps_; }
     long injected() const { return injector_.injected(); }
     long escaped() const { return escaped_; }
-    /// Escapes by exit, as StepperCounters::escapedThrough.
+    /// Escapes by exit, as RunCounters::escapedThrough.
     const std::vector<std::uint64_t>& escapedThrough() const { return escapedThrough_; }
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
@@ -92,10 +80,12 @@ public:
         return softSpheres_ ? &*softSpheres_ : nullptr;
     }
 
-    StepperCounters counters() const;
+    RunCounters counters() const;
+    /// The state now, for the writers (io/run_snapshot.h).
+    RunSnapshot snapshot() const;
     /// Continues from a checkpoint's state: every later step is bit for bit the one the
     /// stepper that wrote the checkpoint would have taken.
-    void resume(const StepperCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
+    void resume(const RunCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
                 std::vector<ContactSpring> springs = {});
 
 private:
@@ -141,6 +131,7 @@ private:
     std::vector<double> startTemperatures_; ///< with heat transfer
     /// A mesh carrier's cells of the midpoints (or of the Maxey–Riley step's predicted ends).
     std::vector<std::int32_t> midpointLocations_;
+    std::vector<std::uint8_t> fliesOn_; ///< particles whose path meets nothing (meetSurfaces)
 };
 
 } // namespace slides
