@@ -26,6 +26,8 @@
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
 //      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
+// The step is the ordered list of these stages, each present only when its term is on, built
+// once at construction (Stepper::buildStages): a new stage is added there.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
 // so results are identical for any thread count. A non-finite position or velocity stops the
 // run with an error naming the particle, instead of propagating.
@@ -89,9 +91,31 @@ public:
                 std::vector<ContactSpring> springs = {});
 
 private:
+    /// One stage of a step of length h, in the order of the header's list.
+    using Stage = void (Stepper::*)(double h);
+    /// The stages of this scene's step, each only when its term is on (built once).
+    void buildStages();
+    /// 1. particles due before t + h enter; their step lengths.
+    void inject(double h);
+    /// 3c (soft spheres). The contact loads kick velocity and spin by half a step.
+    void kickByContacts(double h);
+    /// The paths' starts (positions, velocities) before the stream step.
+    void recordPathStarts(double h);
+    /// 2. the carrier sampled once for the whole cloud at t.
+    void sampleGas(double h);
+    /// 2b. eddy fluctuations added to the gas velocity each particle sees.
+    void disperse(double h);
+    /// 3. the stream step through the gas: the integrator, or the Maxey–Riley step.
     void advance(double h);
-    /// The stream step without gas (carrier none): gravity only, exactly.
-    void flyBallistically();
+    /// 3. the stream step without gas (carrier none): gravity only, exactly.
+    void flyBallistically(double h);
+    /// 3b. temperatures relax toward the gas temperature.
+    void heat(double h);
+    /// 3c (impulses). Contacts between particles during the step.
+    void collide(double h);
+    /// 3c (soft spheres). Loads at the step's end, the second half kick, wall rebounds counted.
+    void kickByNewContacts(double h);
+    /// 4. particles that touched a surface or left the domain leave the cloud.
     void meetSurfaces(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
     std::size_t exitOf(std::size_t i) const;
@@ -121,6 +145,7 @@ private:
     std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
+    std::vector<Stage> stages_;
 
     // Scratch, reused every step.
     CarrierSample gas_;
