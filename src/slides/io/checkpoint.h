@@ -6,7 +6,7 @@
 //
 // checkpoint.h5 is a copy of the run's particles.h5.partial (its frames so far, when HDF5
 // output is on) plus a /checkpoint group: every per-particle array of the cloud
-// (ParticleCloud::forEachArray), the arrivals, the stepper's counters, the frames written and
+// (ParticleCloud::forEachArray), the arrivals, the run's counters, the frames written and
 // the next frame time; attributes name the software version, the hash of the case dictionary
 // and the time step it belongs to. It is written under a temporary name, flushed and renamed
 // (io/atomic_file.h), so a run killed at any moment leaves the previous checkpoint whole; its
