@@ -1,5 +1,5 @@
 // ctest-labels: foundation config
-// summary.json's settings report the dictionary's choices by their names (io/summary.h,
+// summary.json's settings report the dictionary's choices by their names (config/scene_json.h,
 // sceneSettings): for the default spray case with each carrier type and each injection mode
 // in turn, the reported carrier.type and injection.mode are the dictionary's words. (The
 // summary once reported carrier `none` as "foamField" and injection `lattice` as "allAtStart".)
