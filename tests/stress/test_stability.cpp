@@ -17,7 +17,7 @@
 #include "../support/test_scenes.h"
 #include "slides/collide/particle_collisions.h"
 #include "slides/core/name_table.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

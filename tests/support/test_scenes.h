@@ -2,7 +2,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/carrier/make_carrier.h"
+#include "slides/run/resolved_scene.h"
 #include "slides/config/scene.h"
 
 #include <memory>
@@ -31,11 +31,7 @@ inline Scene singleParticleScene() {
     return scene;
 }
 
-/// The scene's carrier, built from the parts of the scene that makeCarrier takes.
-inline std::unique_ptr<CarrierField> carrierOf(const Scene& scene) {
-    return makeCarrier(scene.carrier, scene.nozzle, scene.fluid.temperature,
-                       scene.physics.carrierNeeds(), scene.caseDirectory, scene.dictionaryFile);
-}
+using slides::carrierOf;
 
 /// U = constant.
 class UniformFlow : public CarrierField {

@@ -1,11 +1,11 @@
 // ctest-labels: foundation config
-// summary.json's settings report the dictionary's choices by their names (io/summary.h,
+// summary.json's settings report the dictionary's choices by their names (config/scene_json.h,
 // sceneSettings): for the default spray case with each carrier type and each injection mode
 // in turn, the reported carrier.type and injection.mode are the dictionary's words. (The
 // summary once reported carrier `none` as "foamField" and injection `lattice` as "allAtStart".)
 #include "slides/config/dictionary.h"
+#include "slides/config/scene_json.h"
 #include "slides/config/scene_reader.h"
-#include "slides/io/summary.h"
 
 #include "../support/case_runs.h"
 

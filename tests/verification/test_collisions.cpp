@@ -15,9 +15,9 @@
 #include "../support/test_scenes.h"
 #include "slides/collide/impulse.h"
 #include "slides/collide/particle_collisions.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/contact_pair.h"
 #include "slides/physics/restitution.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

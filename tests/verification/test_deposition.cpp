@@ -10,7 +10,7 @@
 //    of it below that speed, rebounds off it above.
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

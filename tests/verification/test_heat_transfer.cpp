@@ -8,8 +8,8 @@
 //    exact solution θ(t) = θf + (θ0 − θf) e^(−t/τ_θ), for steps of 0.1 and 5 τ_θ.
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/heat_transfer.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // relaxation in a uniform stream against the exact Stokes solution, the observed order of
 // accuracy under step halving, and stability for dt = 1000 response times.
 #include "../support/test_scenes.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/body_force.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

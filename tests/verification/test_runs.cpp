@@ -7,7 +7,7 @@
 #include "slides/config/scene_keys.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/injector.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -20,7 +20,7 @@
 #include "slides/analysis/scene_analysis.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/contact_pair.h"
 #include "slides/physics/soft_contact.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 
@@ -51,7 +51,7 @@ Scene demScene(int count, double restitution, double dt) {
 
 /// A cloud to start from (Stepper::resume), with every particle already injected.
 void start(Stepper& stepper, const Scene& scene, ParticleCloud cloud) {
-    StepperCounters counters;
+    RunCounters counters;
     counters.injected = static_cast<long>(cloud.size());
     counters.rebounds.assign(scene.surfaces.size(), 0);
     cloud.angularVelocity.resize(cloud.size(), Vec3::Zero());

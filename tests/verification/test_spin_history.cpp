@@ -11,9 +11,9 @@
 // with the release's √t start), the tail's accuracy target over 10⁵ steps, and the stepper's
 // spin-up in a vortex with physics.spinHistory on.
 #include "../support/test_scenes.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/spin.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

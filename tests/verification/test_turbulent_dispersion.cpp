@@ -19,8 +19,8 @@
 // independent between particles (the three components of one particle share eddy lifetimes).
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/dispersion.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

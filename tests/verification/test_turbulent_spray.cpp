@@ -11,9 +11,9 @@
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/integrate/stepper.h"
 #include "slides/io/run_output.h"
-#include "slides/io/summary.h"
+#include "slides/run/run_report.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 
@@ -106,10 +106,10 @@ TEST(TurbulentSpray, FramesAndSummaryCarryTheTemperature) {
     const auto directory = std::filesystem::temp_directory_path() /
                            ("slides-turbulent-spray-" + std::to_string(::getpid()));
     {
-        RunOutput output(directory, scene, *carrier);
+        RunOutput output(directory, runOutputSettings(scene));
         while (!stepper.finished()) stepper.step();
-        output.writeFrame(stepper);
-        const auto summary = runSummary(scene, stepper, RunMetrics{});
+        output.writeFrame(stepper.snapshot());
+        const auto summary = runSummary(stepper.snapshot(), summaryInputs(scene), RunMetrics{});
         const auto& temperature = summary["arrivals"]["target"]["temperature"];
         ASSERT_TRUE(temperature.is_object()) << summary["arrivals"].dump();
         EXPECT_GT(temperature["min"].get<double>(), scene.fluid.temperature);

@@ -8,10 +8,10 @@
 #include "../support/test_scenes.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/integrate/stepper.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/spin.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 

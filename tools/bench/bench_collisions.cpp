@@ -13,7 +13,7 @@
 #include "bench_scene.h"
 #include "slides/collide/cell_grid.h"
 #include "slides/collide/particle_collisions.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

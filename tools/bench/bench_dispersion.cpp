@@ -9,7 +9,7 @@
 // "dragOnly"), not figures across runs.
 #include "../../tests/support/test_scenes.h"
 #include "slides/config/scene_reader.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

@@ -9,7 +9,7 @@
 // (id, x, v, R) plus the model state. Compare the rows of one run as ratios.
 #include "../../tests/support/test_scenes.h"
 #include "bench_scene.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

@@ -5,7 +5,7 @@
 // items_per_second is particle-steps per second.
 #include "../../tests/support/test_scenes.h"
 #include "bench_scene.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 #include "slides/analysis/pilot_paths.h"
 
 #include "slides/analysis/physics_terms.h"
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include <algorithm>
 #include <unordered_map>

@@ -1,6 +1,6 @@
 // NoGas: the carrier of a scene without gas (carrier.type none), a DEM scene of gravity and
 // contacts: zero velocity everywhere and no other field. The stepper flies its particles
-// ballistically (integrate/stepper.cpp).
+// ballistically (run/stepper.cpp).
 //
 //     carrier { type none; }
 #pragma once

@@ -11,7 +11,7 @@
 //     surfaces { target { type plane; ... interaction deposit; } }   // absorb | rebound | deposit
 //
 // How to add a model: an enumerator, its name in the table, and the stage of the stepper that
-// resolves its contacts (integrate/stepper.cpp: ParticleCollisions for impulses,
+// resolves its contacts (run/stepper.cpp: ParticleCollisions for impulses,
 // SoftSphereCollisions for forces).
 #pragma once
 

@@ -11,7 +11,7 @@
 //     exponentialMidpoint
 //
 // How to add one: an enumerator, its name and order in integratorNames(), and its branch in
-// the stepper (integrate/stepper.cpp); tests/verification/test_integrators.cpp measures its order.
+// the stepper (run/stepper.cpp); tests/verification/test_integrators.cpp measures its order.
 #pragma once
 
 #include "slides/core/vector.h"

@@ -3,6 +3,7 @@
 #include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/hdf5_file.h"
+#include "slides/io/hdf5_particles.h"
 
 #include <algorithm>
 #include <charconv>
@@ -112,26 +113,15 @@ struct ArrivalColumns {
     }
 };
 
-/// The soft-sphere contacts' springs as columns (SoftSphereCollisions::springs).
-struct SpringColumns {
-    std::vector<std::uint64_t> first, second;
-    std::vector<Vec3> displacement;
-
-    template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
-        visit("first", c.first);
-        visit("second", c.second);
-        visit("displacement", c.displacement);
-    }
-};
-
-void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& output,
-                double nextFrameTime, const RunFingerprint& fingerprint) {
+void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringColumns* springs,
+                const std::vector<FrameRecord>& frames, double nextFrameTime,
+                const RunFingerprint& fingerprint) {
     const Hdf5Handle checkpoint = file.createGroup(group);
     const hid_t g = checkpoint.get();
     file.writeAttribute(g, "version", fingerprint.version);
     file.writeAttribute(g, "dictionaryHash", hex(fingerprint.dictionaryHash));
     file.writeAttribute(g, "dt", fingerprint.dt);
-    const StepperCounters counters = stepper.counters();
+    const RunCounters& counters = snapshot.counters;
     file.writeAttribute(g, "time", counters.time);
     file.writeAttribute(g, "steps", std::int64_t{counters.steps});
     file.writeAttribute(g, "injected", std::int64_t{counters.injected});
@@ -143,15 +133,15 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     writeColumn(file, g, "escapedThrough", counters.escapedThrough);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
-    ParticleCloud::forEachArray(stepper.cloud(), [&](const char* name, const auto& array) {
+    ParticleCloud::forEachArray(snapshot.cloud, [&](const char* name, const auto& array) {
         writeColumn(file, cloud.get(), name, array);
     });
-    const std::size_t width = stepper.cloud().stateWidth;
+    const std::size_t width = snapshot.cloud.stateWidth;
     file.writeAttribute(cloud.get(), "stateWidth", static_cast<std::int64_t>(width));
-    file.writeDataset(cloud.get(), "modelState", stepper.cloud().modelState,
+    file.writeDataset(cloud.get(), "modelState", snapshot.cloud.modelState,
                       std::max<std::size_t>(width, 1), "SI");
     ArrivalColumns arrivals;
-    for (const Arrival& arrival : stepper.arrivals()) {
+    for (const Arrival& arrival : snapshot.arrivals) {
         arrivals.id.push_back(arrival.id);
         arrivals.surface.push_back(arrival.surface);
         arrivals.time.push_back(arrival.time);
@@ -165,21 +155,15 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     ArrivalColumns::forEach(arrivals, [&](const char* name, const auto& array) {
         writeColumn(file, arrived.get(), name, array);
     });
-    if (const SoftSphereCollisions* softSpheres = stepper.softSpheres()) {
-        SpringColumns springs;
-        for (const ContactSpring& spring : softSpheres->springs()) {
-            springs.first.push_back(spring.first);
-            springs.second.push_back(spring.second);
-            springs.displacement.push_back(spring.displacement);
-        }
+    if (springs) {
         const Hdf5Handle contacts = file.createGroup(std::string(group) + "/springs");
-        SpringColumns::forEach(springs, [&](const char* name, const auto& array) {
+        SpringColumns::forEach(*springs, [&](const char* name, const auto& array) {
             writeColumn(file, contacts.get(), name, array);
         });
     }
     std::vector<double> frameTimes;
     std::vector<std::uint64_t> frameCounts;
-    for (const auto& frame : output.frames()) {
+    for (const auto& frame : frames) {
         frameTimes.push_back(frame.time);
         frameCounts.push_back(frame.count);
     }
@@ -191,7 +175,7 @@ void writeState(const Hdf5File& file, const Stepper& stepper, const RunOutput& o
     throw InputError(file.string(), 0, "", why + "; cannot restart from it");
 }
 
-RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
+CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) {
     const std::string g = group;
     if (!file.exists(g)) refuse(file.path(), "not a checkpoint (no " + g + " group)");
     const std::string version = file.readText(g, "version");
@@ -207,7 +191,7 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
         refuse(file.path(), "written with dt = " + shortest(dt) +
                                 " s, this run has dt = " + shortest(expected.dt) + " s");
 
-    RunState state;
+    CheckpointState state;
     state.counters.time = file.readDouble(g, "time");
     state.counters.steps = file.readInt64(g, "steps");
     state.counters.injected = file.readInt64(g, "injected");
@@ -241,15 +225,13 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
                                   arrivals.radius.at(i), arrivals.temperature.at(i),
                                   arrivals.angularVelocity.at(i)});
     if (file.exists(g + "/springs")) {
-        SpringColumns springs;
+        SpringColumns& springs = state.springs;
         SpringColumns::forEach(springs, [&](const char* name, auto& array) {
             readColumn(file, g + "/springs/" + name, array);
         });
         if (springs.second.size() != springs.first.size() ||
             springs.displacement.size() != springs.first.size())
             refuse(file.path(), "damaged: contact spring columns differ in length");
-        for (std::size_t i = 0; i < springs.first.size(); ++i)
-            state.springs.push_back({springs.first[i], springs.second[i], springs.displacement[i]});
     }
     const auto frameTimes = file.readDoubles(g + "/frameTimes", 1);
     const auto frameCounts = file.readUInt64(g + "/frameCounts");
@@ -261,16 +243,18 @@ RunState readState(const Hdf5File& file, const RunFingerprint& expected) {
 
 } // namespace
 
-RunFingerprint fingerprintOf(const Scene& scene) {
-    std::ifstream in(scene.dictionaryFile, std::ios::binary);
+RunFingerprint fingerprintOf(const fs::path& dictionaryFile, double dt) {
+    std::ifstream in(dictionaryFile, std::ios::binary);
     const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return {SLIDES_VERSION, fnv1a(bytes), scene.time.dt};
+    return {SLIDES_VERSION, fnv1a(bytes), dt};
 }
 
-void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nextFrameTime,
+void writeCheckpoint(const fs::path& directory, const std::optional<fs::path>& hdf5,
+                     const RunSnapshot& snapshot, const SpringColumns* springs,
+                     const std::vector<FrameRecord>& frames, double nextFrameTime,
                      const RunFingerprint& fingerprint) {
-    writeFileAtomically(output.directory() / checkpointFileName, [&](const fs::path& temporary) {
-        const auto hdf5 = output.hdf5File(); // flushed after its last frame: consistent on disk
+    writeFileAtomically(directory / checkpointFileName, [&](const fs::path& temporary) {
+        // hdf5 is flushed after its last frame: consistent on disk.
         if (hdf5) {
             std::error_code error;
             fs::copy_file(*hdf5, temporary, fs::copy_options::overwrite_existing, error);
@@ -280,21 +264,21 @@ void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nex
         }
         Hdf5File file(temporary, hdf5 ? Hdf5Access::readWrite : Hdf5Access::create);
         file.checksumData();
-        writeState(file, stepper, output, nextFrameTime, fingerprint);
+        writeState(file, snapshot, springs, frames, nextFrameTime, fingerprint);
         file.close();
     });
 }
 
-RunState resumeFromCheckpoint(const fs::path& directory, const Scene& scene,
-                              const RunFingerprint& fingerprint) {
+CheckpointState readCheckpoint(const fs::path& directory, bool restoreHdf5,
+                               const RunFingerprint& fingerprint) {
     const fs::path path = directory / checkpointFileName;
     if (!fs::exists(path)) refuse(path, "no checkpoint here (write one with --checkpoint-every N)");
-    RunState state;
+    CheckpointState state;
     {
         const Hdf5File file(path, Hdf5Access::readOnly);
         state = readState(file, fingerprint);
     }
-    if (scene.output.hdf5) {
+    if (restoreHdf5) {
         // The frames the checkpoint holds become the HDF5 file the run continues.
         const fs::path partial = directory / (std::string(ParticlesHdf5::fileName) + ".partial");
         std::error_code error;

@@ -6,19 +6,19 @@
 //
 // checkpoint.h5 is a copy of the run's particles.h5.partial (its frames so far, when HDF5
 // output is on) plus a /checkpoint group: every per-particle array of the cloud
-// (ParticleCloud::forEachArray), the arrivals, the stepper's counters, the frames written and
+// (ParticleCloud::forEachArray), the arrivals, the run's counters, the frames written and
 // the next frame time; attributes name the software version, the hash of the case dictionary
 // and the time step it belongs to. It is written under a temporary name, flushed and renamed
 // (io/atomic_file.h), so a run killed at any moment leaves the previous checkpoint whole; its
 // datasets carry Fletcher-32 checksums, so a damaged file is refused rather than resumed.
 #pragma once
 
-#include "slides/integrate/stepper.h"
 #include "slides/io/frame_record.h"
-#include "slides/io/run_output.h"
+#include "slides/io/run_snapshot.h"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,27 +33,45 @@ struct RunFingerprint {
     double dt = 0;                    ///< time step [s] (after command-line overrides)
 };
 
-/// The fingerprint of the scene as read from its dictionary.
-RunFingerprint fingerprintOf(const Scene& scene);
+/// The fingerprint of a run of this dictionary file with time step dt.
+RunFingerprint fingerprintOf(const std::filesystem::path& dictionaryFile, double dt);
+
+/// The tangential springs of the soft-sphere contacts touching, as columns: the ids of the two
+/// bodies and the spring's displacement (collide/soft_sphere_collisions.h, ContactSpring).
+struct SpringColumns {
+    std::vector<std::uint64_t> first, second;
+    std::vector<Vec3> displacement;
+
+    template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
+        visit("first", c.first);
+        visit("second", c.second);
+        visit("displacement", c.displacement);
+    }
+};
 
 /// Everything needed to continue a run.
-struct RunState {
-    StepperCounters counters;
+struct CheckpointState {
+    RunCounters counters;
     ParticleCloud cloud;
     std::vector<Arrival> arrivals;
-    std::vector<ContactSpring> springs; ///< of soft-sphere contacts touching
+    SpringColumns springs; ///< of soft-sphere contacts touching
     std::vector<FrameRecord> frames;
     double nextFrameTime = 0; ///< [s]
 };
 
-/// Writes output.directory()/checkpoint.h5 atomically; throws OutputError.
-void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nextFrameTime,
+/// Writes directory/checkpoint.h5 atomically, as a copy of hdf5File (the run's
+/// particles.h5.partial, when HDF5 output is on) plus the state; springs only with soft-sphere
+/// contacts. Throws OutputError.
+void writeCheckpoint(const std::filesystem::path& directory,
+                     const std::optional<std::filesystem::path>& hdf5File,
+                     const RunSnapshot& snapshot, const SpringColumns* springs,
+                     const std::vector<FrameRecord>& frames, double nextFrameTime,
                      const RunFingerprint& fingerprint);
 
-/// Reads directory/checkpoint.h5 and, when HDF5 output is on, restores particles.h5.partial
-/// from it. Throws InputError naming the checkpoint when it is missing, damaged, or written
-/// by another version, for another case dictionary or another time step.
-RunState resumeFromCheckpoint(const std::filesystem::path& directory, const Scene& scene,
-                              const RunFingerprint& fingerprint);
+/// Reads directory/checkpoint.h5 and, with restoreHdf5 (HDF5 output on), restores
+/// particles.h5.partial from it. Throws InputError naming the checkpoint when it is missing,
+/// damaged, or written by another version, for another case dictionary or another time step.
+CheckpointState readCheckpoint(const std::filesystem::path& directory, bool restoreHdf5,
+                               const RunFingerprint& fingerprint);
 
 } // namespace slides

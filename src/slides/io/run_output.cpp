@@ -3,7 +3,6 @@
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
 #include "slides/io/vtk_carrier_grid.h"
-#include "slides/io/vtk_deposit.h"
 #include "slides/io/vtk_particles.h"
 
 #include <charconv>
@@ -51,27 +50,27 @@ std::filesystem::path prepared(std::filesystem::path directory, std::optional<st
 
 } // namespace
 
-RunOutput::RunOutput(std::filesystem::path directory, const Scene& scene,
-                     const CarrierField& carrier, const std::vector<FrameRecord>* resumed)
+RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& settings,
+                     const std::vector<FrameRecord>* resumed)
     : directory_(
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
-      scene_(scene), series_(directory_ / "particles.pvd"), fields_(scene.output.fields),
-      heating_(scene.physics.heatTransfer != HeatTransferModel::none),
-      spinning_(tracksSpin(scene)) {
+      carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
+      fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
         for (std::size_t n = 0; n < frames_.size(); ++n)
             series.emplace_back(frames_[n].time, frameFileName(n));
         series_.resume(series);
-        if (scene.output.hdf5)
+        if (settings.output.hdf5)
             hdf5_.emplace(directory_, frames_, presentFields(fields_, heating_, spinning_));
-    } else if (scene.output.hdf5) {
-        hdf5_.emplace(directory_, std::filesystem::absolute(scene.caseDirectory).string());
+    } else if (settings.output.hdf5) {
+        hdf5_.emplace(directory_, std::filesystem::absolute(settings.caseDirectory).string());
     }
-    if (scene.carrier.type != CarrierType::none) // no gas, nothing to show
-        writeCarrierVti(directory_ / "carrier.vti", carrier, scene.domain,
-                        scene.output.carrierResolution, 0.0);
+}
+
+void RunOutput::writeCarrier(const CarrierField& carrier, const Box& domain) const {
+    writeCarrierVti(directory_ / "carrier.vti", carrier, domain, carrierResolution_, 0.0);
 }
 
 std::optional<std::filesystem::path> RunOutput::hdf5File() const {
@@ -79,8 +78,8 @@ std::optional<std::filesystem::path> RunOutput::hdf5File() const {
     return hdf5_->partialFile();
 }
 
-void RunOutput::writeFrame(const Stepper& stepper) {
-    const ParticleCloud& cloud = stepper.cloud();
+void RunOutput::writeFrame(const RunSnapshot& snapshot) {
+    const ParticleCloud& cloud = snapshot.cloud;
     ids_.assign(cloud.id.begin(), cloud.id.end());
     positions_.assign(cloud.position.begin(), cloud.position.end());
     velocities_.assign(cloud.velocity.begin(), cloud.velocity.end());
@@ -88,7 +87,7 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
     temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
     spins_.assign(cloud.angularVelocity.begin(), cloud.angularVelocity.end());
-    for (const auto& arrival : stepper.arrivals()) {
+    for (const auto& arrival : snapshot.arrivals) {
         ids_.push_back(arrival.id);
         positions_.push_back(arrival.position);
         velocities_.push_back(arrival.velocity);
@@ -102,14 +101,14 @@ void RunOutput::writeFrame(const Stepper& stepper) {
     if (heating_) frame.temperature = temperatures_;
     if (spinning_) frame.angularVelocity = spins_;
     writeParticlesVtp(directory_ / name, frame);
-    if (hdf5_) hdf5_->writeFrame(stepper.time(), frame);
-    series_.add(stepper.time(), name);
-    frames_.push_back({stepper.time(), ids_.size()});
+    const double time = snapshot.counters.time;
+    if (hdf5_) hdf5_->writeFrame(time, frame);
+    series_.add(time, name);
+    frames_.push_back({time, ids_.size()});
 }
 
-void RunOutput::finish(const Stepper& stepper, const nlohmann::json& summary) {
-    if (hdf5_) hdf5_->finish(stepper.arrivals());
-    writeDeposit(directory_, scene_.surfaces, stepper.arrivals());
+void RunOutput::finish(const RunSnapshot& snapshot, const nlohmann::json& summary) {
+    if (hdf5_) hdf5_->finish(snapshot.arrivals);
     writeTextAtomically(directory_ / "summary.json", summary.dump(2) + "\n");
 }
 

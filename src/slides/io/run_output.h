@@ -14,11 +14,11 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/config/scene.h"
-#include "slides/integrate/stepper.h"
 #include "slides/io/frame_record.h"
 #include "slides/io/hdf5_particles.h"
+#include "slides/io/output_settings.h"
 #include "slides/io/pvd_series.h"
+#include "slides/io/run_snapshot.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -26,20 +26,30 @@
 
 namespace slides {
 
+/// What a run's frames hold, from its resolved settings.
+struct RunOutputSettings {
+    OutputSettings output;
+    std::filesystem::path caseDirectory; ///< named in particles.h5
+    bool temperature = false;            ///< particles carry a temperature (heat transfer)
+    bool spin = false;                   ///< particles carry a spin ω
+};
+
 class RunOutput {
 public:
-    /// Keeps a reference to scene, which must outlive it. Creates the directory, removes the
-    /// particle files, deposit and checkpoint of an earlier run
-    /// there and writes carrier.vti. With `resumed` (a restart, io/checkpoint.h), continues
-    /// after those frames instead: the later frames of the interrupted run are removed, the
-    /// series rewritten with the earlier ones, and particles.h5.partial continued.
-    RunOutput(std::filesystem::path directory, const Scene& scene, const CarrierField& carrier,
+    /// Creates the directory, removes the particle files, deposit and checkpoint of an earlier
+    /// run there. With `resumed` (a restart, io/checkpoint.h), continues after those frames
+    /// instead: the later frames of the interrupted run are removed, the series rewritten with
+    /// the earlier ones, and particles.h5.partial continued.
+    RunOutput(std::filesystem::path directory, const RunOutputSettings& settings,
               const std::vector<FrameRecord>* resumed = nullptr);
 
-    /// Writes the frame of the stepper's current state.
-    void writeFrame(const Stepper& stepper);
+    /// Writes carrier.vti: the carrier sampled at time 0 on output.carrierResolution points
+    /// over domain.
+    void writeCarrier(const CarrierField& carrier, const Box& domain) const;
+    /// Writes the frame of the run's state.
+    void writeFrame(const RunSnapshot& snapshot);
     /// Completes the HDF5 file with the arrivals and writes summary.json: the run is over.
-    void finish(const Stepper& stepper, const nlohmann::json& summary);
+    void finish(const RunSnapshot& snapshot, const nlohmann::json& summary);
 
     const std::filesystem::path& directory() const { return directory_; }
     const std::vector<FrameRecord>& frames() const { return frames_; }
@@ -48,7 +58,7 @@ public:
 
 private:
     std::filesystem::path directory_;
-    const Scene& scene_;
+    std::array<int, 3> carrierResolution_;
     PvdSeries series_;
     std::optional<ParticlesHdf5> hdf5_;
     ParticleFieldSet fields_;

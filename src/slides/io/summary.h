@@ -4,11 +4,16 @@
 //       "performance": { "particleStepsPerSecond": 2.1e7, ... }, "settings": { ... } }
 #pragma once
 
-#include "slides/analysis/scene_analysis.h"
-#include "slides/config/scene.h"
-#include "slides/integrate/stepper.h"
+#include "slides/carrier/jet_frame.h"
+#include "slides/io/run_snapshot.h"
+#include "slides/surfaces/surface_settings.h"
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace slides {
 
@@ -19,19 +24,26 @@ struct RunMetrics {
     std::string carrier;                                        ///< CarrierField::describe()
     std::vector<std::string> boundaryNames;                     ///< CarrierField::boundaryNames()
     std::vector<std::pair<std::string, double>> carrierFigures; ///< CarrierField::figures()
-    const SceneAnalysis* analysis = nullptr;                    ///< the scene analysis, if run
+};
+
+/// What the summary reports of the resolved scene besides the run's state.
+struct SummaryInputs {
+    std::filesystem::path caseDirectory;
+    long requested = 0; ///< particles.count
+    std::span<const Surface> surfaces;
+    JetNozzle nozzle;              ///< arrivals' distance from its axis
+    bool temperature = false;      ///< particles carry a temperature (heat transfer)
+    bool collisions = false;       ///< particle collisions are on
+    double stokesResponseTime = 0; ///< at the mean radius [s]
+    nlohmann::json sceneAnalysis;  ///< the scene analysis as JSON; null when not run
+    nlohmann::json settings;       ///< every setting used, in SI units
 };
 
 /// Escapes by exit name: the carrier's patches by name, the domain box as "domain".
-nlohmann::json escapedThrough(const Stepper& stepper, const std::vector<std::string>& patches);
+nlohmann::json escapedThrough(const RunCounters& counters, const std::vector<std::string>& patches);
 
 /// The summary of a finished (or stopped) run.
-nlohmann::json runSummary(const Scene& scene, const Stepper& stepper, const RunMetrics& metrics);
-
-/// The scene analysis as JSON: figures, the decision table, the time step and its limits.
-nlohmann::json sceneAnalysisJson(const SceneAnalysis& analysis);
-
-/// The scene as JSON, every value in SI units, as used by the run.
-nlohmann::json sceneSettings(const Scene& scene);
+nlohmann::json runSummary(const RunSnapshot& snapshot, const SummaryInputs& inputs,
+                          const RunMetrics& metrics);
 
 } // namespace slides

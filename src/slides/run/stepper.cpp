@@ -1,4 +1,4 @@
-#include "slides/integrate/stepper.h"
+#include "slides/run/stepper.h"
 
 #include "slides/core/parallel.h"
 #include "slides/integrate/relaxation_batch.h"
@@ -37,6 +37,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
         softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
+    buildStages();
 }
 
 bool Stepper::finished() const {
@@ -50,12 +51,18 @@ long Stepper::collisions() const {
     return softSpheres_ ? softSpheres_->collisions() : 0;
 }
 
-StepperCounters Stepper::counters() const {
+RunCounters Stepper::counters() const {
     return {time_,          steps_,          injector_.injected(), escaped_,
             particleSteps_, escapedThrough_, collisions(),         surfaces_.rebounds()};
 }
 
-void Stepper::resume(const StepperCounters& counters, ParticleCloud cloud,
+RunSnapshot Stepper::snapshot() const {
+    std::optional<long> listBuilds;
+    if (softSpheres_) listBuilds = softSpheres_->listBuilds();
+    return {counters(), cloud_, arrivals_, listBuilds};
+}
+
+void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
                      std::vector<Arrival> arrivals, std::vector<ContactSpring> springs) {
     time_ = counters.time;
     steps_ = counters.steps;
@@ -90,6 +97,29 @@ std::size_t Stepper::exitOf(std::size_t i) const {
 
 void Stepper::step() {
     const double h = std::min(scene_.time.dt, scene_.time.endTime - time_);
+    for (const Stage stage : stages_) (this->*stage)(h);
+    time_ += h;
+    ++steps_;
+}
+
+void Stepper::buildStages() {
+    const bool gas = scene_.carrier.type != CarrierType::none;
+    stages_ = {&Stepper::inject};
+    if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
+    // The paths' starts, for the stream step through a gas (the midpoint rule), impulse
+    // collisions, heating and meeting surfaces at the touch.
+    if (gas || collisions_ || heating_.on() || surfaces_.meetsAtTouch())
+        stages_.push_back(&Stepper::recordPathStarts);
+    if (gas) stages_.push_back(&Stepper::sampleGas);
+    if (gas && dispersion_.on()) stages_.push_back(&Stepper::disperse);
+    stages_.push_back(gas ? &Stepper::advance : &Stepper::flyBallistically);
+    if (heating_.on()) stages_.push_back(&Stepper::heat);
+    if (collisions_) stages_.push_back(&Stepper::collide);
+    if (softSpheres_) stages_.push_back(&Stepper::kickByNewContacts);
+    stages_.push_back(&Stepper::meetSurfaces);
+}
+
+void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();
     injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
@@ -99,35 +129,33 @@ void Stepper::step() {
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     particleSteps_ += cloud_.size();
-    if (softSpheres_) {
-        cloud_.contactForce.resize(cloud_.size(), Vec3::Zero());
-        cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
-        softSpheres_->halfKick(cloud_, stepLengths_);
-    }
-    // The paths' starts, for the stream step through a gas (the midpoint rule), impulse
-    // collisions, heating and meeting surfaces at the touch.
-    if (scene_.carrier.type != CarrierType::none || collisions_ || heating_.on() ||
-        surfaces_.meetsAtTouch()) {
-        startPositions_ = cloud_.position;
-        startVelocities_ = cloud_.velocity;
-    }
-    advance(h);
-    if (heating_.on()) {
-        startTemperatures_ = cloud_.temperature;
-        startTemperatures_.resize(cloud_.size(), scene_.particles.injectionTemperature);
-    }
+}
+
+void Stepper::kickByContacts(double) {
+    cloud_.contactForce.resize(cloud_.size(), Vec3::Zero());
+    cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
+    softSpheres_->halfKick(cloud_, stepLengths_);
+}
+
+void Stepper::recordPathStarts(double) {
+    startPositions_ = cloud_.position;
+    startVelocities_ = cloud_.velocity;
+}
+
+void Stepper::heat(double) {
+    startTemperatures_ = cloud_.temperature;
+    startTemperatures_.resize(cloud_.size(), scene_.particles.injectionTemperature);
     heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
-    if (collisions_) collisions_->collide(cloud_, startPositions_, stepLengths_);
-    if (softSpheres_) {
-        softSpheres_->updateLoads(cloud_, h);
-        softSpheres_->halfKick(cloud_, stepLengths_);
-        const auto& wallContacts = softSpheres_->newWallContacts();
-        for (std::size_t s = 0; s < wallContacts.size(); ++s)
-            surfaces_.countRebounds(s, wallContacts[s]);
-    }
-    meetSurfaces(h);
-    time_ += h;
-    ++steps_;
+}
+
+void Stepper::collide(double) { collisions_->collide(cloud_, startPositions_, stepLengths_); }
+
+void Stepper::kickByNewContacts(double h) {
+    softSpheres_->updateLoads(cloud_, h);
+    softSpheres_->halfKick(cloud_, stepLengths_);
+    const auto& wallContacts = softSpheres_->newWallContacts();
+    for (std::size_t s = 0; s < wallContacts.size(); ++s)
+        surfaces_.countRebounds(s, wallContacts[s]);
 }
 
 namespace {
@@ -153,15 +181,20 @@ constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); }
 
 } // namespace
 
+void Stepper::sampleGas(double) {
+    CarrierNeeds needs = needs_;
+    if (maxeyRiley_) needs.velocityGradient = maxeyRiley_->needs().velocityGradient;
+    sampleCarrier(cloud_.position, cloud_.carrierLocation, time_, needs, gas_);
+}
+
+void Stepper::disperse(double) {
+    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
+}
+
 void Stepper::advance(double h) {
-    if (scene_.carrier.type == CarrierType::none) return flyBallistically();
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    CarrierNeeds needs = needs_;
-    if (maxeyRiley_) needs.velocityGradient = maxeyRiley_->needs().velocityGradient;
-    sampleCarrier(x, cloud_.carrierLocation, time_, needs, gas_);
-    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
     if (maxeyRiley_) {
         // The predicted ends walk from the particles' cells and see the same eddies.
         midpointLocations_ = cloud_.carrierLocation;
@@ -198,7 +231,7 @@ void Stepper::advance(double h) {
     }
 }
 
-void Stepper::flyBallistically() {
+void Stepper::flyBallistically(double) {
     const Vec3& a = bodyAcceleration_;
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
@@ -242,20 +275,20 @@ void Stepper::meetSurfaces(double h) {
     // In parallel, the particles that only fly on: finite, in the box and the mesh, their path
     // touching no surface; the rest are met one by one in order (arrivals, deposit, removal).
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
-    std::vector<std::uint8_t> fliesOn(cloud_.size());
+    fliesOn_.resize(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const Vec3& x = cloud_.position[i];
-        fliesOn[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
-                     insideBox(scene_.domain, x) &&
-                     (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
-                     (!surfaces_.meetsAtTouch() ||
-                      !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]));
+        fliesOn_[i] = x.allFinite() && cloud_.velocity[i].allFinite() &&
+                      insideBox(scene_.domain, x) &&
+                      (cloud_.carrierLocation.empty() || cloud_.carrierLocation[i] >= -1) &&
+                      (!surfaces_.meetsAtTouch() ||
+                       !surfaces_.mayTouch(startPositions_[i], x, cloud_.radius[i]));
     }
     // Backwards, so the particle swapped into a removed slot has already been handled.
     for (std::size_t i = cloud_.size(); i-- > 0;) {
-        if (fliesOn[i]) continue;
+        if (fliesOn_[i]) continue;
         const Vec3& x = cloud_.position[i];
         const Vec3& v = cloud_.velocity[i];
         if (!x.allFinite() || !v.allFinite()) {

@@ -26,6 +26,8 @@
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
 //      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
+// The step is the ordered list of these stages, each present only when its term is on, built
+// once at construction (Stepper::buildStages): a new stage is added there.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
 // so results are identical for any thread count. A non-finite position or velocity stops the
 // run with an error naming the particle, instead of propagating.
@@ -40,6 +42,7 @@
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
 #include "slides/integrate/turbulent_dispersion.h"
+#include "slides/io/run_snapshot.h"
 #include "slides/physics/drag.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/surface_impacts.h"
@@ -49,19 +52,6 @@
 #include <vector>
 
 namespace slides {
-
-/// What a checkpoint holds of a stepper besides its cloud and arrivals (io/checkpoint.h).
-struct StepperCounters {
-    double time = 0; ///< [s]
-    long steps = 0;
-    long injected = 0;
-    long escaped = 0;
-    std::uint64_t particleSteps = 0;
-    /// Escapes by exit: [0] the domain box (or a patch not known), [1 + p] carrier patch p.
-    std::vector<std::uint64_t> escapedThrough;
-    long collisions = 0;                 ///< particle–particle contacts
-    std::vector<std::uint64_t> rebounds; ///< per surface
-};
 
 class Stepper {
 public:
@@ -80,7 +70,7 @@ public:
     std::uint64_t particleSteps() const { return particleSteps_; }
     long injected() const { return injector_.injected(); }
     long escaped() const { return escaped_; }
-    /// Escapes by exit, as StepperCounters::escapedThrough.
+    /// Escapes by exit, as RunCounters::escapedThrough.
     const std::vector<std::uint64_t>& escapedThrough() const { return escapedThrough_; }
     const ParticleCloud& cloud() const { return cloud_; }
     const std::vector<Arrival>& arrivals() const { return arrivals_; }
@@ -92,16 +82,40 @@ public:
         return softSpheres_ ? &*softSpheres_ : nullptr;
     }
 
-    StepperCounters counters() const;
+    RunCounters counters() const;
+    /// The state now, for the writers (io/run_snapshot.h).
+    RunSnapshot snapshot() const;
     /// Continues from a checkpoint's state: every later step is bit for bit the one the
     /// stepper that wrote the checkpoint would have taken.
-    void resume(const StepperCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
+    void resume(const RunCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
                 std::vector<ContactSpring> springs = {});
 
 private:
+    /// One stage of a step of length h, in the order of the header's list.
+    using Stage = void (Stepper::*)(double h);
+    /// The stages of this scene's step, each only when its term is on (built once).
+    void buildStages();
+    /// 1. particles due before t + h enter; their step lengths.
+    void inject(double h);
+    /// 3c (soft spheres). The contact loads kick velocity and spin by half a step.
+    void kickByContacts(double h);
+    /// The paths' starts (positions, velocities) before the stream step.
+    void recordPathStarts(double h);
+    /// 2. the carrier sampled once for the whole cloud at t.
+    void sampleGas(double h);
+    /// 2b. eddy fluctuations added to the gas velocity each particle sees.
+    void disperse(double h);
+    /// 3. the stream step through the gas: the integrator, or the Maxey–Riley step.
     void advance(double h);
-    /// The stream step without gas (carrier none): gravity only, exactly.
-    void flyBallistically();
+    /// 3. the stream step without gas (carrier none): gravity only, exactly.
+    void flyBallistically(double h);
+    /// 3b. temperatures relax toward the gas temperature.
+    void heat(double h);
+    /// 3c (impulses). Contacts between particles during the step.
+    void collide(double h);
+    /// 3c (soft spheres). Loads at the step's end, the second half kick, wall rebounds counted.
+    void kickByNewContacts(double h);
+    /// 4. particles that touched a surface or left the domain leave the cloud.
     void meetSurfaces(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
     std::size_t exitOf(std::size_t i) const;
@@ -131,6 +145,7 @@ private:
     std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
+    std::vector<Stage> stages_;
 
     // Scratch, reused every step.
     CarrierSample gas_;
@@ -141,6 +156,7 @@ private:
     std::vector<double> startTemperatures_; ///< with heat transfer
     /// A mesh carrier's cells of the midpoints (or of the Maxey–Riley step's predicted ends).
     std::vector<std::int32_t> midpointLocations_;
+    std::vector<std::uint8_t> fliesOn_; ///< particles whose path meets nothing (meetSurfaces)
 };
 
 } // namespace slides

@@ -1,0 +1,116 @@
+#include "slides/config/scene_json.h"
+
+#include "slides/core/name_table.h"
+
+#include <cmath>
+
+namespace slides {
+
+namespace {
+
+nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+nlohmann::json material(const MaterialSettings& m) {
+    return {{"bulkModulus", m.bulkModulus},
+            {"shearModulus", m.shearModulus},
+            {"yieldStress", m.yieldStress},
+            {"surfaceEnergy", m.surfaceEnergy}};
+}
+
+} // namespace
+
+nlohmann::json sceneSettings(const Scene& scene) {
+    nlohmann::json settings;
+    settings["dictionary"] = scene.dictionaryFile.string();
+    settings["fluid"] = {{"density", scene.fluid.density},
+                         {"kinematicViscosity", scene.fluid.kinematicViscosity},
+                         {"temperature", scene.fluid.temperature}};
+    settings["nozzle"] = {{"centre", vec(scene.nozzle.centre)},
+                          {"axis", vec(scene.nozzle.axis)},
+                          {"radius", scene.nozzle.radius},
+                          {"crossSpanDirection", vec(scene.nozzle.crossSpanDirection)}};
+    const CarrierSettings& carrier = scene.carrier;
+    settings["carrier"] = {{"type", nameOf(carrierTypeNames(), carrier.type)},
+                           {"profile", nameOf(jetGeometryNames(), carrier.profile)},
+                           {"nozzleVelocity", carrier.nozzleVelocity},
+                           {"coreLength", carrier.coreLength},
+                           {"viscosity", carrier.viscosity}};
+    if (carrier.turbulence)
+        settings["carrier"]["turbulence"] = {
+            {"scaling", nameOf(turbulenceScalingNames(), carrier.turbulence->scaling)},
+            {"intensity", carrier.turbulence->intensity},
+            {"lengthScale", carrier.turbulence->lengthScale},
+            {"lengthScaleToHalfWidth", carrier.turbulence->lengthScaleToHalfWidth}};
+    const RadiusDistribution& radius = scene.particles.radius;
+    settings["particles"] = {
+        {"count", scene.particles.count},
+        {"density", scene.particles.density},
+        {"radiusDistribution",
+         {{"type", nameOf(radiusDistributionNames(), radius.kind)},
+          {"meanRadius", radius.meanRadius()},
+          {"minimum", radius.minimum},
+          {"maximum", std::isfinite(radius.maximum) ? nlohmann::json(radius.maximum) : nullptr}}},
+        {"material", material(scene.particles.material)}};
+    settings["injection"] = {{"mode", nameOf(injectionModeNames(), scene.injection.mode)},
+                             {"rate", scene.injection.rate},
+                             {"crossSpanSpeed", scene.injection.crossSpanSpeed},
+                             {"seed", scene.injection.seed}};
+    settings["physics"] = {
+        {"drag", nameOf(dragModelNames(), scene.physics.drag)},
+        {"gravity", vec(scene.physics.gravity)},
+        {"buoyancy", scene.physics.buoyancy},
+        {"history",
+         {{"model", nameOf(historyModelNames(), scene.physics.history)},
+          {"accuracy", scene.physics.historyAccuracy}}},
+        {"addedMass", scene.physics.addedMass},
+        {"pressureGradient", scene.physics.pressureGradient},
+        {"lift", nameOf(liftModelNames(), scene.physics.lift)},
+        {"spin", scene.physics.spin},
+        {"spinHistory", scene.physics.spinHistory},
+        {"autoThreshold", scene.physics.autoThreshold},
+        {"dispersion",
+         {{"model", nameOf(dispersionModelNames(), scene.physics.dispersion)},
+          {"Cmu", scene.physics.dispersionConstants.Cmu},
+          {"turbulentSchmidtNumber", scene.physics.dispersionConstants.turbulentSchmidtNumber}}},
+        {"heatTransfer",
+         {{"model", nameOf(heatTransferModelNames(), scene.physics.heatTransfer)},
+          {"fluidThermalConductivity", scene.fluid.thermalConductivity},
+          {"fluidSpecificHeat", scene.fluid.specificHeat},
+          {"particleSpecificHeat", scene.particles.specificHeat},
+          {"injectionTemperature", scene.particles.injectionTemperature}}}};
+    settings["time"] = {{"dt", scene.time.dt},
+                        {"endTime", scene.time.endTime},
+                        {"stopWhenAllDone", scene.time.stopWhenAllDone},
+                        {"integrator", nameOf(integratorNames(), scene.time.integrator)}};
+    const CollisionSettings& collisions = scene.collisions;
+    settings["collisions"] = {
+        {"model", nameOf(collisionModelNames(), collisions.model)},
+        {"restitution",
+         {{"model", nameOf(restitutionModelNames(), collisions.restitution.model)},
+          {"coefficient", collisions.restitution.coefficient},
+          {"yieldPressureFactor", collisions.restitution.yieldPressureFactor}}},
+        {"friction",
+         {{"static", collisions.friction.staticCoefficient},
+          {"dynamic", collisions.friction.dynamicCoefficient}}}};
+    settings["deposition"] = {{"adhesion", nameOf(adhesionModelNames(), scene.deposition.model)},
+                              {"adhesionFactor", scene.deposition.factor},
+                              {"hamakerConstant", scene.deposition.hamakerConstant},
+                              {"contactSeparation", scene.deposition.contactSeparation}};
+    for (const auto& plane : scene.surfaces)
+        settings["surfaces"][plane.name] = {
+            {"type", "plane"},
+            {"point", vec(plane.point)},
+            {"normal", vec(plane.normal)},
+            {"interaction", nameOf(surfaceInteractionNames(), plane.interaction)},
+            {"material", material(plane.material)}};
+    settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
+    std::vector<std::string_view> fields;
+    for (const auto& field : particleFieldNames())
+        if (scene.output.fields.contains(field.value)) fields.push_back(field.name);
+    settings["output"] = {{"interval", scene.output.interval},
+                          {"carrierResolution", scene.output.carrierResolution},
+                          {"fields", fields}};
+    return settings;
+}
+
+} // namespace slides

@@ -1,0 +1,51 @@
+#include "slides/run/resolved_scene.h"
+
+#include "slides/carrier/make_carrier.h"
+#include "slides/config/scene_reader.h"
+#include "slides/core/error.h"
+#include "slides/surfaces/patch_wall.h"
+
+namespace slides {
+
+namespace {
+
+void applyOverrides(const SceneOverrides& overrides, Scene& scene) {
+    if (overrides.endTime) {
+        if (!(*overrides.endTime > 0))
+            throw InputError("command line", 0, "--end-time", "must be positive");
+        scene.time.endTime = *overrides.endTime;
+    }
+    if (overrides.dt) {
+        if (!(*overrides.dt > 0)) throw InputError("command line", 0, "--dt", "must be positive");
+        scene.time.dt = *overrides.dt;
+    }
+    if (overrides.time) {
+        if (scene.carrier.type != CarrierType::foamField)
+            throw InputError("command line", 0, "--time",
+                             "only an OpenFOAM carrier (foamField) has time directories");
+        scene.carrier.foamTime = *overrides.time;
+    }
+    if (scene.time.dt > scene.time.endTime)
+        throw InputError("command line", 0, "--dt", "is longer than the end time");
+}
+
+} // namespace
+
+std::unique_ptr<CarrierField> carrierOf(const Scene& scene) {
+    return makeCarrier(scene.carrier, scene.nozzle, scene.fluid.temperature,
+                       scene.physics.carrierNeeds(), scene.caseDirectory, scene.dictionaryFile);
+}
+
+ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
+                           const SceneOverrides& overrides) {
+    Scene scene = readScene(caseDirectory);
+    applyOverrides(overrides, scene);
+    std::unique_ptr<const CarrierField> carrier = carrierOf(scene);
+    if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
+    scene.surfaces = placePatchSurfaces(scene.surfaces, *carrier, scene.dictionaryFile);
+    SceneAnalysis analysis = analyseScene(scene, *carrier);
+    applyAnalysis(analysis, scene);
+    return {std::move(scene), std::move(carrier), std::move(analysis)};
+}
+
+} // namespace slides
