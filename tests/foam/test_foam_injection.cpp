@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -48,9 +49,10 @@ std::filesystem::path wedgeStreamCase(int count) {
     return directory;
 }
 
-// Every injected particle carries the cell that holds it (the walk's start for its first step),
-// found again by testing that cell alone; without it the cloud's locations would be empty or −1.
-TEST(FoamInjection, KeepsTheCellItsSearchFound) {
+// Every injected particle carries the tetrahedron that holds it (the walk's start for its first
+// step): its barycentric weights there are ≥ −tolerance; without it the cloud's locations would
+// be empty or −1.
+TEST(FoamInjection, KeepsTheTetrahedronItsSearchFound) {
     const auto directory = wedgeStreamCase(500);
     const Scene scene = readScene(directory);
     const auto carrier = makeCarrier(scene);
@@ -64,7 +66,10 @@ TEST(FoamInjection, KeepsTheCellItsSearchFound) {
         Mat3 rotation;
         const Vec3 onWedge = foam.wedge()->toWedge(cloud.position[i], rotation);
         ASSERT_GE(cloud.carrierLocation[i], 0) << "particle " << i;
-        EXPECT_TRUE(foam.locator().locateInCell(onWedge, cloud.carrierLocation[i]).has_value())
+        const TetLocation tet = foam.locator().tetAt(cloud.carrierLocation[i]);
+        const auto weights =
+            barycentricWeights(foam.locator().vertices(tet.cell, tet.face, tet.edge), onWedge);
+        EXPECT_GE(*std::min_element(weights.begin(), weights.end()), -FoamLocator::tolerance)
             << "particle " << i;
         // The stream is uniform: each particle starts with its velocity (to round-off).
         EXPECT_NEAR((cloud.velocity[i] - Vec3(4, 0, 0)).norm(), 0.0, 1e-12);
