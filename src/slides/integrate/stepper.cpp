@@ -1,6 +1,7 @@
 #include "slides/integrate/stepper.h"
 
 #include "slides/core/parallel.h"
+#include "slides/core/particle_order.h"
 #include "slides/integrate/relaxation_batch.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
@@ -87,6 +88,7 @@ std::size_t Stepper::exitOf(std::size_t i) const {
 
 void Stepper::step() {
     const double h = std::min(scene_.time.dt, scene_.time.endTime - time_);
+    orderByLocation(cloud_, steps_);
     const std::size_t alreadyInFlight = cloud_.size();
     injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
