@@ -1,14 +1,19 @@
 // ctest-labels: foam run
 // Injection into an OpenFOAM carrier: the cell the injector's search finds is kept in the cloud
 // (CarrierField::sampleFrom), so the first step walks from it instead of searching again; on the
-// 5° wedge OpenFOAM wrote (tests/foam/data/wedge) with a uniform stream, tracked in 3-D.
+// 5° wedge OpenFOAM wrote (tests/foam/data/wedge) with a uniform stream, tracked in 3-D. And the
+// cloud ordered by location (core/particle_order.h) every few steps: a run resumed from its state
+// between two reorders goes on bit for bit as the uninterrupted one.
 #include "../support/test_scenes.h"
 #include "slides/carrier/foam_carrier.h"
 #include "slides/config/scene_reader.h"
+#include "slides/core/particle_order.h"
 #include "slides/integrate/injector.h"
+#include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -48,9 +53,10 @@ std::filesystem::path wedgeStreamCase(int count) {
     return directory;
 }
 
-// Every injected particle carries the cell that holds it (the walk's start for its first step),
-// found again by testing that cell alone; without it the cloud's locations would be empty or −1.
-TEST(FoamInjection, KeepsTheCellItsSearchFound) {
+// Every injected particle carries the tetrahedron that holds it (the walk's start for its first
+// step): its barycentric weights there are ≥ −tolerance; without it the cloud's locations would
+// be empty or −1.
+TEST(FoamInjection, KeepsTheTetrahedronItsSearchFound) {
     const auto directory = wedgeStreamCase(500);
     const Scene scene = readScene(directory);
     const auto carrier = test::carrierOf(scene);
@@ -64,11 +70,46 @@ TEST(FoamInjection, KeepsTheCellItsSearchFound) {
         Mat3 rotation;
         const Vec3 onWedge = foam.wedge()->toWedge(cloud.position[i], rotation);
         ASSERT_GE(cloud.carrierLocation[i], 0) << "particle " << i;
-        EXPECT_TRUE(foam.locator().locateInCell(onWedge, cloud.carrierLocation[i]).has_value())
+        const TetLocation tet = foam.locator().tetAt(cloud.carrierLocation[i]);
+        const auto weights =
+            barycentricWeights(foam.locator().vertices(tet.cell, tet.face, tet.edge), onWedge);
+        EXPECT_GE(*std::min_element(weights.begin(), weights.end()), -FoamLocator::tolerance)
             << "particle " << i;
         // The stream is uniform: each particle starts with its velocity (to round-off).
         EXPECT_NEAR((cloud.velocity[i] - Vec3(4, 0, 0)).norm(), 0.0, 1e-12);
     }
+    std::filesystem::remove_all(directory);
+}
+
+// A run stopped after a step count between two reorders and resumed in a new stepper from its
+// counters and cloud (what a checkpoint holds) reorders at the same steps as the uninterrupted
+// run and ends with the same particles, positions and velocities, bit for bit. The cloud is
+// reordered on the way: its ids are no longer in injection order.
+TEST(ParticleOrder, ResumedRunReordersAtTheSameSteps) {
+    const auto directory = wedgeStreamCase(300);
+    Scene scene = readScene(directory);
+    scene.physics.gravity = Vec3(0, -9.81, 0); // paths that differ from particle to particle
+    const auto carrier = test::carrierOf(scene);
+    scene.domain = carrier->bounds().value(); // as the command line sets it
+    const long stopAt = 3 * particleOrderInterval + 2, endAt = 6 * particleOrderInterval + 1;
+    Stepper uninterrupted(scene, *carrier);
+    for (long n = 0; n < endAt; ++n) uninterrupted.step();
+    Stepper first(scene, *carrier);
+    for (long n = 0; n < stopAt; ++n) first.step();
+    Stepper resumed(scene, *carrier);
+    resumed.resume(first.counters(), first.cloud(), first.arrivals(), {});
+    for (long n = stopAt; n < endAt; ++n) resumed.step();
+
+    const ParticleCloud& expected = uninterrupted.cloud();
+    const ParticleCloud& actual = resumed.cloud();
+    ASSERT_GT(expected.size(), 100u)
+        << uninterrupted.escaped() << " escaped, " << uninterrupted.arrivals().size()
+        << " arrived, t = " << uninterrupted.time();
+    EXPECT_FALSE(std::is_sorted(expected.id.begin(), expected.id.end()));
+    EXPECT_EQ(actual.id, expected.id);
+    EXPECT_EQ(actual.position, expected.position);
+    EXPECT_EQ(actual.velocity, expected.velocity);
+    EXPECT_EQ(actual.carrierLocation, expected.carrierLocation);
     std::filesystem::remove_all(directory);
 }
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -116,6 +117,76 @@ TEST(FoamLocator, FindsPointsOnFacesEdgesAndVertices) {
             EXPECT_TRUE(locator.locateInCell(point, walked.cell).has_value());
             EXPECT_TRUE(bruteForce(locator, mesh, point).found());
         }
+    }
+}
+
+// Every tetrahedron (cell, face, edge) of a cell has its own index below tetIndexEnd(), and the
+// index gives it back: a particle's one int32 location names its tetrahedron.
+TEST(FoamLocator, TetrahedronIndicesNameEachTetrahedronOnce) {
+    for (const auto& [name, mesh] : testMeshes()) {
+        const FoamLocator locator(mesh);
+        std::vector<int> seen(static_cast<std::size_t>(locator.tetIndexEnd()), 0);
+        for (int c = 0; c < mesh.cellCount; ++c)
+            for (const int f : mesh.facesOf(c))
+                for (int edge = 0; edge < static_cast<int>(mesh.pointsOf(f).size()); ++edge) {
+                    const int tet = locator.tetIndex(c, f, edge);
+                    ASSERT_GE(tet, 0) << name;
+                    ASSERT_LT(tet, locator.tetIndexEnd()) << name;
+                    ++seen[static_cast<std::size_t>(tet)];
+                    const TetLocation back = locator.tetAt(tet);
+                    EXPECT_EQ(back.cell, c) << name;
+                    EXPECT_EQ(back.face, f) << name;
+                    EXPECT_EQ(back.edge, edge) << name;
+                    EXPECT_EQ(back.tet, tet) << name;
+                }
+        EXPECT_EQ(*std::max_element(seen.begin(), seen.end()), 1) << name;
+    }
+}
+
+// Particles moving 0.3 cell a step, each walking from the tetrahedron of its previous point (as
+// FoamCarrier keeps it): each lands in a tetrahedron whose weights hold the point (≥ −tolerance)
+// and in a cell that holds it; a point still inside its previous tetrahedron (by a margin
+// of 1e-6 in every weight) stays there, with that tetrahedron's barycentric weights.
+TEST(FoamLocator, WalksFromThePreviousTetrahedron) {
+    for (const auto& [name, mesh] : testMeshes()) {
+        const FoamLocator locator(mesh);
+        std::mt19937 random(5);
+        std::uniform_real_distribution<double> unit(0, 1);
+        const double cellSize =
+            std::cbrt((mesh.boundsMax - mesh.boundsMin).prod() / mesh.cellCount);
+        int stayed = 0, moved = 0;
+        for (int particle = 0; particle < 100; ++particle) {
+            Vec3 point = mesh.cellCentres[static_cast<std::size_t>(particle * 7 % mesh.cellCount)];
+            TetLocation at = locator.locate(point, -1);
+            ASSERT_TRUE(at.found()) << name;
+            for (int step = 0; step < 40; ++step) {
+                Vec3 direction(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5);
+                const Vec3 next = point + 0.3 * cellSize * direction.normalized();
+                const TetLocation expected = bruteForce(locator, mesh, next);
+                if (!expected.found()) continue; // stay inside the mesh
+                const TetLocation previous = locator.tetAt(at.tet);
+                const auto before = barycentricWeights(
+                    locator.vertices(previous.cell, previous.face, previous.edge), next);
+                at = locator.locateFrom(next, at.tet);
+                ASSERT_TRUE(at.found()) << name << " point " << next.transpose();
+                EXPECT_TRUE(locator.locateInCell(next, at.cell).has_value()) << name;
+                const auto weights =
+                    barycentricWeights(locator.vertices(at.cell, at.face, at.edge), next);
+                EXPECT_GE(*std::min_element(weights.begin(), weights.end()),
+                          -FoamLocator::tolerance)
+                    << name;
+                if (*std::min_element(before.begin(), before.end()) > 1e-6) {
+                    ++stayed;
+                    EXPECT_EQ(at.tet, previous.tet) << name;
+                    EXPECT_EQ(at.weights, before) << name;
+                } else {
+                    ++moved;
+                }
+                point = next;
+            }
+        }
+        EXPECT_GT(stayed, 100) << name;
+        EXPECT_GT(moved, 1000) << name;
     }
 }
 

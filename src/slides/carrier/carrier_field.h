@@ -3,7 +3,7 @@
 // The one runtime-polymorphic boundary of the tracker (DESIGN.md): it is called once per batch,
 // never per particle, so the particle loops stay inlinable. Implementations: the analytic jets
 // (carrier/analytic_jet.h, carrier/round_laminar_jet.h) and OpenFOAM fields
-// (carrier/foam_carrier.h), which keep each particle's cell between batches (sampleFrom).
+// (carrier/foam_carrier.h), which keep each particle's tetrahedron between batches (sampleFrom).
 //
 //     carrier { type analyticJet; analyticJetCoeffs { ... } }
 #pragma once
@@ -63,13 +63,13 @@ public:
     virtual void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                         CarrierSample& out) const = 0;
 
-    /// Whether the carrier keeps a location per point between batches (a mesh cell): then the
-    /// caller holds one int32 per particle, −1 when unknown, and samples with sampleFrom.
+    /// Whether the carrier keeps a location per point between batches (a mesh tetrahedron): then
+    /// the caller holds one int32 per particle, −1 when unknown, and samples with sampleFrom.
     virtual bool keepsLocations() const { return false; }
 
-    /// sample() starting each point's search at locations[i] and updating it: the cell, −1 if
-    /// unknown, or ≤ −2 for a point outside the mesh (−3 − location: the patch it left
-    /// through, −1 when not known).
+    /// sample() starting each point's search at locations[i] and updating it: ≥ 0 where it is, −1
+    /// if unknown, or ≤ −2 for a point outside the mesh (−3 − location: the patch it left through,
+    /// −1 when not known).
     virtual void sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations,
                             double time, CarrierNeeds needs, CarrierSample& out) const {
         (void)locations;

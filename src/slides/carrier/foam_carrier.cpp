@@ -74,6 +74,9 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
       mesh_(readFoamMesh(caseDirectory)) {
     const std::string meshFile = (caseDirectory / "constant" / "polyMesh" / "boundary").string();
     if (mesh_.cellCount == 0) throw InputError(meshFile, 0, "", "the mesh has no cells");
+    if (mesh_.facePoints.size() >= std::size_t{1} << 30) // FoamLocator's tetrahedron indices
+        throw InputError((caseDirectory / "constant" / "polyMesh" / "faces").string(), 0, "",
+                         "the mesh's faces hold 2³⁰ points or more: too large to track on");
     locator_ = std::make_unique<FoamLocator>(mesh_);
     wedge_ = findWedge(mesh_, meshFile);
     for (const auto& patch : mesh_.patches)
@@ -99,10 +102,10 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
     if (settings_.interpolation == FoamInterpolation::lattice) buildLattice(caseDirectory);
 }
 
-std::optional<LatticeNodeValues> FoamCarrier::cellPointValues(const Vec3& x, int& cell) const {
-    const TetLocation at = locator_->locate(x, cell);
+std::optional<LatticeNodeValues> FoamCarrier::cellPointValues(const Vec3& x, int& tet) const {
+    const TetLocation at = locator_->locateFrom(x, tet);
     if (!at.found()) return std::nullopt;
-    cell = at.cell;
+    tet = at.tet;
     LatticeNodeValues values;
     values.velocity = velocity_->value(mesh_, at);
     const std::array<const InterpolableField<double>*, 3> scalars{k_.get(), epsilon_.get(),
@@ -152,9 +155,9 @@ void FoamCarrier::buildLattice(const std::filesystem::path& caseDirectory) {
                          "gives " + std::to_string(static_cast<long>(nodes)) +
                              " lattice nodes over the mesh (at most 5e7): choose a larger spacing");
     frame.origin = base + frame.axes * low;
-    int cell = -1;
+    int tet = -1;
     lattice_ = std::make_unique<FoamLattice>(
-        frame, [&](const Vec3& x) { return cellPointValues(x, cell); },
+        frame, [&](const Vec3& x) { return cellPointValues(x, tet); },
         std::array<bool, 3>{k_ != nullptr, epsilon_ != nullptr, temperature_ != nullptr});
 
     // Its error against cellPoint at random points of the mesh (those the lattice serves).
@@ -168,7 +171,7 @@ void FoamCarrier::buildLattice(const std::filesystem::path& caseDirectory) {
         Vec3 at;
         for (int d = 0; d < 3; ++d) at[d] = unit(random) * (frame.nodes[d] - 1);
         const Vec3 x = frame.origin + frame.spacing * (frame.axes * at);
-        const auto expected = cellPointValues(x, cell);
+        const auto expected = cellPointValues(x, tet);
         if (!expected) continue;
         LatticeWeights weights;
         if (!lattice_->locate(x, weights)) {
@@ -235,7 +238,7 @@ void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNee
         if (needs.temperature) out.temperature[i] = lattice_->scalar(2, weights);
         return;
     }
-    const TetLocation at = locator_->locate(x, location);
+    const TetLocation at = locator_->locateFrom(x, location);
     if (!at.found()) {
         location = -3 - at.exitPatch; // ≤ −2: outside, through patch −3 − location if ≥ 0
         out.velocity[i].setZero();
@@ -244,7 +247,7 @@ void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNee
         if (needs.temperature) out.temperature[i] = 0;
         return;
     }
-    location = at.cell;
+    location = at.tet;
     const bool cellScheme = settings_.interpolation == FoamInterpolation::cell;
     const auto value = [&](const auto& field) {
         return cellScheme ? field.cells[at.cell] : field.value(mesh_, at);
@@ -337,10 +340,12 @@ CarrierNeeds FoamCarrier::provides() const {
 
 double FoamCarrier::resolutionLength(std::int32_t location) const {
     if (lattice_) return lattice_->frame().spacing;
-    if (location < 0 || location >= mesh_.cellCount) return std::numeric_limits<double>::infinity();
+    if (location < 0 || location >= locator_->tetIndexEnd())
+        return std::numeric_limits<double>::infinity();
+    const int cell = locator_->tetAt(location).cell;
     const bool planar = wedge_ || emptyNormal_;
     double area = 0;
-    for (const int face : mesh_.facesOf(location)) {
+    for (const int face : mesh_.facesOf(cell)) {
         const int patch = mesh_.facePatch[face];
         if (planar && patch >= 0 &&
             (mesh_.patches[patch].type == PatchType::wedge ||
@@ -348,7 +353,7 @@ double FoamCarrier::resolutionLength(std::int32_t location) const {
             continue;
         area += mesh_.faceAreas[face].norm();
     }
-    return (planar ? 4.0 : 6.0) * mesh_.cellVolumes[location] / area;
+    return (planar ? 4.0 : 6.0) * mesh_.cellVolumes[cell] / area;
 }
 
 std::string FoamCarrier::describe() const {

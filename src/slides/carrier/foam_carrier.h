@@ -7,11 +7,13 @@
 // tracked in 3-D: a point maps to the wedge's centre plane by its axial coordinate and radius,
 // and the sampled U and ∇U are rotated back about the axis (∇U with its hoop column u_r/r,
 // which a wedge one cell thick cannot resolve). A 2-D mesh (empty patches) is
-// sampled on its mid plane. Points outside the mesh see still gas; sampleFrom marks them with the
-// patch they left through, and the stepper counts them as escaped. With the lattice scheme the
-// fields are resampled at start-up (carrier/foam_lattice.h) on the mapped 3-D, wedge or 2-D
-// coordinates; points the lattice cannot serve take the exact cellPoint path, and describe()
-// reports the lattice's error against cellPoint at random points of the mesh.
+// sampled on its mid plane. A location (sampleFrom) is the locator's tetrahedron index, so each
+// particle's walk starts in the tetrahedron where its last one ended. Points outside the mesh see
+// still gas; sampleFrom marks them with the patch they left through, and the stepper counts them as
+// escaped. With the lattice scheme the fields are resampled at start-up (carrier/foam_lattice.h) on
+// the mapped 3-D, wedge or 2-D coordinates; points the lattice cannot serve take the exact
+// cellPoint path, and describe() reports the lattice's error against cellPoint at random points of
+// the mesh.
 //
 //     carrier { type foamField; foamFieldCoeffs { time latestTime; interpolation cellPoint; } }
 #pragma once
@@ -53,7 +55,7 @@ public:
                     CarrierNeeds needs, CarrierSample& out) const override;
     std::string describe() const override;
     CarrierNeeds provides() const override;
-    /// The size of cell location: 6V/A of its faces in 3-D, 4V/A of the faces not on wedge or
+    /// The size of location's cell: 6V/A of its faces in 3-D, 4V/A of the faces not on wedge or
     /// empty patches for a wedge or 2-D mesh; the lattice's spacing for the lattice scheme.
     double resolutionLength(std::int32_t location) const override;
 
@@ -80,7 +82,7 @@ private:
     /// plane; and its error against cellPoint, for describe().
     void buildLattice(const std::filesystem::path& caseDirectory);
     /// The point's values by the exact path (locate, cellPoint), nullopt outside the mesh.
-    std::optional<LatticeNodeValues> cellPointValues(const Vec3& x, int& cell) const;
+    std::optional<LatticeNodeValues> cellPointValues(const Vec3& x, int& tet) const;
 
     std::filesystem::path timeDirectory_;
     FoamCarrierSettings settings_;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace slides {
 
@@ -22,6 +24,31 @@ FoamLocator::FoamLocator(const FoamMesh& mesh) : mesh_(mesh) {
         Vec3 sum = Vec3::Zero();
         for (const int p : mesh.pointsOf(f)) sum += mesh.points[p];
         faceMidpoints_[f] = sum / static_cast<double>(mesh.pointsOf(f).size());
+    }
+    slotFace_.resize(mesh.facePoints.size());
+    for (int f = 0; f < mesh.faceCount(); ++f)
+        std::fill(slotFace_.begin() + mesh.faceOffsets[f],
+                  slotFace_.begin() + mesh.faceOffsets[f + 1], f);
+    // Within each cell, the two tetrahedra on either side of the triangle (centre, a, b) of each
+    // face edge (a, b): the edge's two faces in that cell.
+    acrossSpoke_.assign(static_cast<std::size_t>(tetIndexEnd()), -1);
+    std::vector<std::pair<std::pair<int, int>, int>> edges; // (low point, high point), tet
+    for (int c = 0; c < mesh.cellCount; ++c) {
+        edges.clear();
+        for (const int f : mesh.facesOf(c)) {
+            const auto ring = mesh.pointsOf(f);
+            const int n = static_cast<int>(ring.size());
+            for (int edge = 0; edge < n; ++edge) {
+                const int a = ring[edge], b = ring[(edge + 1) % n];
+                edges.push_back({{std::min(a, b), std::max(a, b)}, tetIndex(c, f, edge)});
+            }
+        }
+        std::sort(edges.begin(), edges.end());
+        for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+            if (edges[k].first == edges[k + 1].first) {
+                acrossSpoke_[edges[k].second] = edges[k + 1].second;
+                acrossSpoke_[edges[k + 1].second] = edges[k].second;
+            }
     }
     // About one cell per bin.
     const Vec3 extent = (mesh.boundsMax - mesh.boundsMin).cwiseMax(1e-300);
@@ -84,13 +111,24 @@ std::array<Vec3, 4> FoamLocator::vertices(int cell, int face, int edge) const {
             mesh_.points[ring[(edge + 1) % n]]};
 }
 
+int FoamLocator::tetIndex(int cell, int face, int edge) const {
+    return 2 * (mesh_.faceOffsets[face] + edge) + (mesh_.owner[face] == cell ? 0 : 1);
+}
+
+TetLocation FoamLocator::tetAt(int tet) const {
+    const int slot = tet / 2;
+    const int face = slotFace_[slot];
+    const int cell = tet % 2 == 0 ? mesh_.owner[face] : mesh_.neighbour[face];
+    return TetLocation{cell, face, slot - mesh_.faceOffsets[face], {}, -1, tet};
+}
+
 std::optional<TetLocation> FoamLocator::locateInCell(const Vec3& point, int cell) const {
     for (const int face : mesh_.facesOf(cell)) {
         const int n = static_cast<int>(mesh_.pointsOf(face).size());
         for (int edge = 0; edge < n; ++edge) {
             const auto weights = barycentricWeights(vertices(cell, face, edge), point);
             if (*std::min_element(weights.begin(), weights.end()) >= -tolerance)
-                return TetLocation{cell, face, edge, weights, -1};
+                return TetLocation{cell, face, edge, weights, -1, tetIndex(cell, face, edge)};
         }
     }
     return std::nullopt;
@@ -123,7 +161,8 @@ TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
     }
     if (nearest < 0) return outside;
     int boundaryFace = -1;
-    if (const TetLocation walked = walk(point, nearest, boundaryFace); walked.found())
+    if (const TetLocation walked = walk(point, startTetrahedron(point, nearest), boundaryFace);
+        walked.found())
         return walked;
     // The walk left through the boundary (the point is outside, or beyond a concave part of
     // it) or was lost: test the bin's cells whose boxes hold the point.
@@ -139,20 +178,26 @@ TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
 
 TetLocation FoamLocator::locate(const Vec3& point, int startCell) const {
     if (startCell < 0 || startCell >= mesh_.cellCount) return locateGlobally(point);
+    return locateFrom(point, startTetrahedron(point, startCell));
+}
+
+TetLocation FoamLocator::locateFrom(const Vec3& point, int startTet) const {
+    if (startTet < 0 || startTet >= tetIndexEnd()) return locateGlobally(point);
     int boundaryFace = -1;
-    if (const TetLocation walked = walk(point, startCell, boundaryFace); walked.found())
+    if (const TetLocation walked = walk(point, startTet, boundaryFace); walked.found())
         return walked;
     TetLocation searched = locateGlobally(point);
     if (!searched.found() && boundaryFace >= 0) searched.exitPatch = mesh_.facePatch[boundaryFace];
     return searched;
 }
 
-void FoamLocator::startTetrahedron(const Vec3& point, int cell, int& face, int& edge) const {
+int FoamLocator::startTetrahedron(const Vec3& point, int cell) const {
     // The face whose point-average lies most in the point's direction from the cell centre,
     // then the face point most in its direction from that average: usually the tetrahedron
     // holding the point or its neighbour, so the walk takes a step or none.
     const Vec3& centre = mesh_.cellCentres[cell];
     const Vec3 towards = point - centre;
+    int face = mesh_.facesOf(cell)[0], edge = 0;
     double best = -INFINITY;
     for (const int f : mesh_.facesOf(cell)) {
         const Vec3 spoke = faceMidpoints_[f] - centre;
@@ -172,52 +217,48 @@ void FoamLocator::startTetrahedron(const Vec3& point, int cell, int& face, int& 
             edge = j;
         }
     }
+    return tetIndex(cell, face, edge);
 }
 
-TetLocation FoamLocator::walk(const Vec3& point, int startCell, int& boundaryFace) const {
-    int cell = startCell, face = mesh_.facesOf(cell)[0], edge = 0;
-    startTetrahedron(point, cell, face, edge);
+TetLocation FoamLocator::walk(const Vec3& point, int startTet, int& boundaryFace) const {
+    // The tetrahedron (cell, face, face point slots j and next) of index tet = 2 j + side.
+    int tet = startTet;
+    int face = slotFace_[tet / 2];
+    int cell = tet % 2 == 0 ? mesh_.owner[face] : mesh_.neighbour[face];
     // A walk longer than this is cycling on a badly shaped mesh: lost.
     const int maximumSteps = 1000;
     for (int step = 0; step < maximumSteps; ++step) {
-        const auto weights = barycentricWeights(vertices(cell, face, edge), point);
+        const int slot = tet / 2, first = mesh_.faceOffsets[face],
+                  end = mesh_.faceOffsets[face + 1];
+        const int next = slot + 1 < end ? slot + 1 : first;
+        const auto weights = barycentricWeights({mesh_.cellCentres[cell], faceMidpoints_[face],
+                                                 mesh_.points[mesh_.facePoints[slot]],
+                                                 mesh_.points[mesh_.facePoints[next]]},
+                                                point);
         const int k =
             static_cast<int>(std::min_element(weights.begin(), weights.end()) - weights.begin());
-        if (weights[k] >= -tolerance) return TetLocation{cell, face, edge, weights, -1};
-        const auto ring = mesh_.pointsOf(face);
-        const int n = static_cast<int>(ring.size());
+        if (weights[k] >= -tolerance)
+            return TetLocation{cell, face, slot - first, weights, -1, tet};
         switch (k) {
-        case 0: { // across the mesh face into the next cell
-            const int next = mesh_.across(face, cell);
-            if (next < 0) {
+        case 0: { // across the mesh face into the next cell: the same triangle, the other side
+            const int across = mesh_.across(face, cell);
+            if (across < 0) {
                 boundaryFace = face;
                 return {};
             }
-            cell = next;
+            cell = across;
+            tet ^= 1;
             break;
         }
-        case 1: { // across the triangle (centre, p_edge, p_edge+1) to the cell's other face
-            const int a = ring[edge], b = ring[(edge + 1) % n];
-            bool moved = false;
-            for (const int other : mesh_.facesOf(cell)) {
-                if (other == face) continue;
-                const auto otherRing = mesh_.pointsOf(other);
-                const int m = static_cast<int>(otherRing.size());
-                for (int j = 0; j < m && !moved; ++j) {
-                    const int p = otherRing[j], q = otherRing[(j + 1) % m];
-                    if ((p == a && q == b) || (p == b && q == a)) {
-                        face = other;
-                        edge = j;
-                        moved = true;
-                    }
-                }
-                if (moved) break;
-            }
-            if (!moved) return {}; // an open cell: lost
+        case 1: // across the triangle (centre, p_edge, p_edge+1) to the cell's other face
+            tet = acrossSpoke_[tet];
+            if (tet < 0) return {}; // an open cell: lost
+            face = slotFace_[tet / 2];
             break;
-        }
-        case 2: edge = (edge + 1) % n; break;      // across (centre, midpoint, p_edge+1)
-        default: edge = (edge + n - 1) % n; break; // across (centre, midpoint, p_edge)
+        case 2: tet = 2 * next + tet % 2; break; // across (centre, midpoint, p_edge+1)
+        default:                                 // across (centre, midpoint, p_edge)
+            tet = 2 * (slot > first ? slot - 1 : end - 1) + tet % 2;
+            break;
         }
     }
     return {};

@@ -28,7 +28,8 @@ struct ParticleCloud {
     std::vector<Vec3> position; ///< [m]
     std::vector<Vec3> velocity; ///< [m/s]
     std::vector<double> radius; ///< [m]
-    /// A mesh carrier's cell of each particle (CarrierField::sampleFrom); empty otherwise.
+    /// A mesh carrier's location (tetrahedron) of each particle (CarrierField::sampleFrom); empty
+    /// otherwise.
     std::vector<std::int32_t> carrierLocation;
     /// Per-particle model state (history memory): stateWidth doubles a particle, moved
     /// with it; empty when no model keeps state.

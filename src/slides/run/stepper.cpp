@@ -1,6 +1,7 @@
 #include "slides/run/stepper.h"
 
 #include "slides/core/parallel.h"
+#include "slides/core/particle_order.h"
 #include "slides/integrate/relaxation_batch.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
@@ -104,7 +105,9 @@ void Stepper::step() {
 
 void Stepper::buildStages() {
     const bool gas = scene_.carrier.type != CarrierType::none;
-    stages_ = {&Stepper::inject};
+    stages_.clear();
+    if (carrier_.keepsLocations()) stages_.push_back(&Stepper::orderInMemory);
+    stages_.push_back(&Stepper::inject);
     if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
     // The paths' starts, for the stream step through a gas (the midpoint rule), impulse
     // collisions, heating and meeting surfaces at the touch.
@@ -118,6 +121,8 @@ void Stepper::buildStages() {
     if (softSpheres_) stages_.push_back(&Stepper::kickByNewContacts);
     stages_.push_back(&Stepper::meetSurfaces);
 }
+
+void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
 
 void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();

@@ -1,6 +1,8 @@
 // Stepper: the loop of one run — inject, sample the carrier, integrate, meet surfaces.
 //
 // Per step of length h (the last one shortened to end exactly at time.endTime):
+//   0. with a mesh carrier, every few steps the cloud is put in the order of its tetrahedra
+//      (core/particle_order.h), so the walks and samples read the mesh nearly in order;
 //   1. particles due before t + h enter (integrate/injector.h); one due at t_k inside the step
 //      is advanced only over its remainder t + h − t_k, as a parcel's step fraction in OpenFOAM
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
@@ -96,6 +98,8 @@ private:
     /// The stages of this scene's step, each only when its term is on (built once).
     void buildStages();
     /// 1. particles due before t + h enter; their step lengths.
+    /// 0. every few steps, the cloud in the order of its carrier locations.
+    void orderInMemory(double h);
     void inject(double h);
     /// 3c (soft spheres). The contact loads kick velocity and spin by half a step.
     void kickByContacts(double h);
