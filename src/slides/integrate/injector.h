@@ -7,7 +7,7 @@
 // (uniform in area) and cross-span direction come from counter-based random streams keyed by
 // (seed, k), so they do not depend on the time step, the thread count or the other particles.
 // A particle due within a step is added at the start of that step, on the nozzle, and the
-// stepper advances it over the rest of the step only (integrate/stepper.h).
+// stepper advances it over the rest of the step only (run/stepper.h).
 //
 //     injection { mode rate; rate 2e5; crossSpanSpeed 0.5; seed 1; }
 #pragma once
