@@ -2,8 +2,8 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
-#include "slides/run/resolved_scene.h"
 #include "slides/config/scene.h"
+#include "slides/run/resolved_scene.h"
 
 #include <memory>
 #include <string>
