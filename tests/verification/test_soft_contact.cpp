@@ -277,6 +277,8 @@ TEST(RestitutionAtTheDefaultStep, ErrorAtOneTwentiethOfTheContactAndItsOrder) {
         const double error40 = worstRestitutionError(restitution, 40);
         const double error80 = worstRestitutionError(restitution, 80);
         EXPECT_LT(error20, bound) << restitution;
+        EXPECT_LT(error40, error20) << restitution; // converging at each halving
+        EXPECT_LT(error80, error40) << restitution;
         // First order with damping (halving dt halves the error, within the phase's scatter),
         // second order without.
         const double order = std::log2(error20 / error80) / 2;

@@ -2,7 +2,7 @@
 // the start, summary.json's content (io/summary.h) from the resolved scene and the final
 // snapshot, and the closing lines on the console.
 //
-//     slides-track 0.1.0: case foamCases/analyticSpray
+//     slides-track 0.2.0: case foamCases/analyticSpray
 //       carrier    analytic sech² jet ...
 //     done: t = 0.01 s in 1000 steps, ...
 #pragma once
