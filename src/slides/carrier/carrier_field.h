@@ -104,6 +104,9 @@ public:
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }
 
+    /// The normal of the plane of a 2-D field (a mesh one cell thick between `empty` patches).
+    virtual std::optional<Vec3> planeNormal() const { return std::nullopt; }
+
     /// Short human-readable description for the run summary, e.g. "analyticJet (axisymmetric)".
     virtual std::string describe() const = 0;
 };

@@ -66,6 +66,7 @@ public:
     const FoamLattice* lattice() const { return lattice_.get(); }
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
     std::optional<Box> bounds() const override;
+    std::optional<Vec3> planeNormal() const override { return emptyNormal_; }
     std::vector<std::string> boundaryNames() const override;
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
     /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against
