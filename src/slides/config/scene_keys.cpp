@@ -13,11 +13,17 @@
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
 
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace slides {
 
 namespace {
+
+constexpr double noMinimum = -std::numeric_limits<double>::infinity();
+constexpr double maximumGasSpeed = 1e4; // m/s, beyond any gas jet
+constexpr double maximumRadius = 1;     // m, beyond any particle a jet carries
 
 template <typename Table> std::vector<std::string> namesOf(const Table& table) {
     std::vector<std::string> names;
@@ -51,7 +57,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "planar: Bickley's plane jet across nozzle.crossSpanDirection; axisymmetric: the same "
          "profile with y replaced by the radius (the reference's 3-D use)."},
         {"carrier.analyticJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
-         "Exit velocity U0; the virtual origin puts U0 on the centreline at the core end."},
+         "Exit velocity U0; the virtual origin puts U0 on the centreline at the core end.",
+         noMinimum, maximumGasSpeed},
         {"carrier.analyticJetCoeffs.coreLength", K::scalar, "m", "0", {}, R::nonNegative,
          "Length of the unentrained core after the nozzle (profile frozen, no entrainment)."},
         {"carrier.analyticJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
@@ -67,7 +74,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.roundLaminarJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of Schlichting's round laminar jet."},
         {"carrier.roundLaminarJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
-         "Exit velocity U0 of the round nozzle."},
+         "Exit velocity U0 of the round nozzle.", noMinimum, maximumGasSpeed},
         {"carrier.roundLaminarJetCoeffs.coreLength", K::scalar, "m", "0", {}, R::nonNegative,
          "Length of the unentrained core after the nozzle."},
         {"carrier.roundLaminarJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
@@ -118,9 +125,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Cross-span direction y of a planar jet; its part along the axis is removed."},
 
         {"particles", K::dictionary, "-", "", {}, R::any, "The particles."},
-        {"particles.count", K::integer, "-", "", {}, R::positive, "Number of particles."},
+        {"particles.count", K::integer, "-", "", {}, R::positive, "Number of particles; their arrays must fit in the machine's memory (run/run_limits.h)."},
         {"particles.density", K::scalar, "kg/m^3", "", {}, R::positive,
-         "Particle material density ρp."},
+         "Particle material density ρp.", noMinimum, 1e5},
         {"particles.radiusDistribution", K::dictionary, "-", "", {}, R::any,
          "Particle radius distribution."},
         {"particles.radiusDistribution.type", K::word, "-", "fixed",
@@ -128,13 +135,13 @@ std::vector<KeyDeclaration> declareKeys() {
          "fixed: value; normal: mean, standardDeviation; logNormal: median, "
          "geometricStandardDeviation."},
         {"particles.radiusDistribution.value", K::scalar, "m", "-", {}, R::positive,
-         "Radius for type fixed."},
+         "Radius for type fixed.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.mean", K::scalar, "m", "-", {}, R::positive,
-         "Mean radius for type normal."},
+         "Mean radius for type normal.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.standardDeviation", K::scalar, "m", "-", {},
          R::nonNegative, "Standard deviation for type normal."},
         {"particles.radiusDistribution.median", K::scalar, "m", "-", {}, R::positive,
-         "Median radius for type logNormal."},
+         "Median radius for type logNormal.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.geometricStandardDeviation", K::scalar, "-", "-", {},
          R::atLeastOne, "e^σ of ln R for type logNormal."},
         {"particles.radiusDistribution.minimum", K::scalar, "m", "0", {}, R::nonNegative,
@@ -202,7 +209,7 @@ std::vector<KeyDeclaration> declareKeys() {
          "finite_reynolds_history.h); auto: basset where "
          "the scene analysis finds it matters."},
         {"physics.history.accuracy", K::scalar, "-", "1e-3", {}, R::positive,
-         "Relative error of the tail's kernel over the run; sets its window and terms."},
+         "Relative error of the tail's kernel over the run; sets its window and terms.", 1e-10},
         {"physics.addedMass", K::switchOrAuto, "-", "auto", {}, R::any,
          "Added mass C_A = 1/2 (Eq. 3.3): inertia m_p + m_f/2, and C_A m_f DU/Dt."},
         {"physics.pressureGradient", K::switchOrAuto, "-", "auto", {}, R::any,
@@ -242,7 +249,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "-", {}, R::positive,
          "Time step; default: the scene analysis's choice from the particles' paths (flow "
-         "scale, cell crossing, response time, eddy lifetime, collision time)."},
+         "scale, cell crossing, response time, eddy lifetime, collision time). At most 1e9 steps "
+         "to time.endTime (run/run_limits.h)."},
         {"time.endTime", K::scalar, "s", "", {}, R::positive, "Latest end of the run."},
         {"time.stopWhenAllDone", K::boolean, "-", "yes", {}, R::any,
          "Stop before endTime once every particle is injected and has arrived or escaped."},
@@ -335,9 +343,11 @@ std::vector<KeyDeclaration> declareKeys() {
 
         {"output", K::dictionary, "-", "", {}, R::any, "What is written to CASE/slides/."},
         {"output.interval", K::scalar, "s", "", {}, R::positive,
-         "Time between particle frames (particles_NNNNNN.vtp)."},
+         "Time between particle frames (particles_NNNNNN.vtp). At most 1e6 frames to "
+         "time.endTime (run/run_limits.h)."},
         {"output.carrierResolution", K::integerTriple, "-", "(96 48 48)", {}, R::atLeastOne,
-         "Lattice points per axis of carrier.vti over the domain."},
+         "Lattice points per axis of carrier.vti over the domain; the grid must fit in the "
+         "machine's memory (run/run_limits.h)."},
         {"output.fields", K::wordList, "-",
          "(id diameter velocity speed state temperature angularVelocity)",
          namesOf(particleFieldNames()), R::any,
@@ -397,6 +407,18 @@ const KeyDeclaration* findSceneKey(std::string_view path) {
     return nullptr;
 }
 
+namespace {
+
+/// The declared bounds as a sentence of the doc column, e.g. " At most 1e+05."
+std::string rangeText(const KeyDeclaration& key) {
+    std::ostringstream text;
+    if (std::isfinite(key.minimum)) text << " At least " << key.minimum << ".";
+    if (std::isfinite(key.maximum)) text << " At most " << key.maximum << ".";
+    return text.str();
+}
+
+} // namespace
+
 std::string sceneKeysMarkdown() {
     std::ostringstream table;
     table << "| key | type | unit | default | description |\n|---|---|---|---|---|\n";
@@ -411,7 +433,7 @@ std::string sceneKeysMarkdown() {
                                      : key.optional() ? "—"
                                                       : "`" + key.fallback + "`";
         table << "| `" << key.path << "` | " << type << " | " << key.unit << " | " << fallback
-              << " | " << key.doc << " |\n";
+              << " | " << key.doc << rangeText(key) << " |\n";
     }
     return table.str();
 }

@@ -5,6 +5,7 @@
 //     particles { density 5680; }   // declared as {"particles.density", scalar, "kg/m^3", ...}
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,6 +35,9 @@ struct KeyDeclaration {
     std::vector<std::string> allowed; ///< allowed words (word keys only)
     KeyRange range = KeyRange::any;
     std::string doc;
+    /// Bounds past any real case, where a run's arithmetic would overflow (in the README table).
+    double minimum = -std::numeric_limits<double>::infinity();
+    double maximum = std::numeric_limits<double>::infinity();
 
     bool required() const { return fallback.empty(); }
     bool optional() const { return fallback == "-"; }

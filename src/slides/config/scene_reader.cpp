@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <type_traits>
 
@@ -21,6 +22,13 @@ namespace {
 class KeyReader {
 public:
     explicit KeyReader(const Dictionary& top) : top_(top) {}
+
+    /// The line of the entry at path, 0 when it is not there.
+    int lineOf(const std::string& path) const {
+        std::string leaf;
+        const Dictionary* parent = parentOf(path, leaf);
+        return parent ? parent->lineOf(leaf) : 0;
+    }
 
     bool has(const std::string& path) const {
         std::string leaf;
@@ -200,20 +208,25 @@ private:
     }
 
     void checkRange(const std::string& path, double value) const {
-        switch (declaration(path).range) {
+        const KeyDeclaration& key = declaration(path);
+        switch (key.range) {
         case KeyRange::any:
             if (!std::isfinite(value)) fail(path, "must be a finite number");
-            return;
+            break;
         case KeyRange::positive:
             if (!(value > 0) || !std::isfinite(value)) fail(path, "must be a positive number");
-            return;
+            break;
         case KeyRange::nonNegative:
             if (!(value >= 0) || !std::isfinite(value)) fail(path, "must not be negative");
-            return;
+            break;
         case KeyRange::atLeastOne:
             if (!(value >= 1) || !std::isfinite(value)) fail(path, "must be at least 1");
-            return;
+            break;
         }
+        std::ostringstream bound;
+        if (value < key.minimum) bound << "must be at least " << key.minimum;
+        if (value > key.maximum) bound << "must be at most " << key.maximum;
+        if (!bound.str().empty()) fail(path, bound.str());
     }
 
     /// The dictionary holding the last component of path (nullptr if a parent is missing).
@@ -675,6 +688,10 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         keys.fail("output.fields", "angularVelocity needs the particles' spin: physics.spin on, "
                                    "collisions, or a surface that rebounds or deposits");
     return scene;
+}
+
+int keyLine(const std::filesystem::path& dictionaryFile, const std::string& path) {
+    return KeyReader(Dictionary::parseFile(dictionaryFile)).lineOf(path);
 }
 
 Scene readScene(const std::filesystem::path& caseDirectory) {

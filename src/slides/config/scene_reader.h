@@ -7,6 +7,7 @@
 #include "slides/config/scene.h"
 
 #include <filesystem>
+#include <string>
 
 namespace slides {
 
@@ -17,5 +18,9 @@ Scene readScene(const std::filesystem::path& caseDirectory);
 
 /// The scene described by an already parsed dictionary (for tests and tools).
 Scene sceneFromDictionary(const Dictionary& dictionary, const std::filesystem::path& caseDirectory);
+
+/// The line of the dotted key path in the dictionary file, 0 when it is not there: for errors
+/// found once the carrier is known, after the dictionary was read.
+int keyLine(const std::filesystem::path& dictionaryFile, const std::string& path);
 
 } // namespace slides

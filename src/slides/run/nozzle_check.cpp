@@ -1,6 +1,6 @@
 #include "slides/run/nozzle_check.h"
 
-#include "slides/config/dictionary.h"
+#include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 
 #include <algorithm>
@@ -62,13 +62,12 @@ std::size_t countOutsideBox(std::span<const Vec3> points, const Box& box) {
 
 [[noreturn]] void refuse(const Scene& scene, std::size_t outside, std::size_t points,
                          const std::string& where) {
-    const Dictionary dictionary = Dictionary::parseFile(scene.dictionaryFile);
-    const int line = dictionary.isDict("nozzle") ? dictionary.subDict("nozzle").lineOf("radius") : 0;
     std::ostringstream message;
-    message << "the nozzle disc of radius " << scene.nozzle.radius << " m is not inside "
-            << where << ": " << std::lround(100.0 * outside / points) << " % of it (" << outside
-            << " of " << points << " points spread evenly over it) lies outside";
-    throw InputError(scene.dictionaryFile.string(), line, "nozzle.radius", message.str());
+    message << "the nozzle disc of radius " << scene.nozzle.radius << " m is not inside " << where
+            << ": " << std::lround(100.0 * outside / points) << " % of it (" << outside << " of "
+            << points << " points spread evenly over it) lies outside";
+    throw InputError(scene.dictionaryFile.string(), keyLine(scene.dictionaryFile, "nozzle.radius"),
+                     "nozzle.radius", message.str());
 }
 
 } // namespace

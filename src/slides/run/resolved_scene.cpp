@@ -4,6 +4,7 @@
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 #include "slides/run/nozzle_check.h"
+#include "slides/run/run_limits.h"
 #include "slides/surfaces/patch_wall.h"
 
 namespace slides {
@@ -47,6 +48,7 @@ ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
     scene.surfaces = placePatchSurfaces(scene.surfaces, *carrier, scene.dictionaryFile);
     SceneAnalysis analysis = analyseScene(scene, *carrier);
     applyAnalysis(analysis, scene);
+    requireRunWithinLimits(scene);
     return {std::move(scene), std::move(carrier), std::move(analysis)};
 }
 
