@@ -2,6 +2,7 @@
 // Whole runs: reproducibility (same seed → identical particles; thread count changes nothing),
 // conservation of particle count, injection statistics, and the command line's behaviour on
 // the default case and on broken cases (exit status 2, one message naming file, line, key).
+#include "../support/broken_cases.h"
 #include "../support/case_runs.h"
 #include "../support/test_scenes.h"
 #include "slides/config/scene_keys.h"
@@ -226,47 +227,13 @@ TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
             << "temporary left behind: " << entry.path();
 }
 
-/// Writes a copy of the default case's dictionary with one line replaced.
-void writeBrokenCase(const ScratchDirectory& scratch, const std::string& from,
-                     const std::string& to) {
-    std::string text = slurp(defaultCase / "constant" / "slidesProperties");
-    const auto at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
-}
-
-struct BrokenCase {
-    const char* name;
-    const char* from;     ///< text of the default case to replace
-    const char* to;       ///< its replacement
-    int lineOffset;       ///< error line relative to the line where `from` starts
-    const char* expected; ///< substring of the one error message, after "file:line: "
-};
-
-class CommandLineRejects : public ::testing::TestWithParam<BrokenCase> {};
+class CommandLineRejects : public ::testing::TestWithParam<test::BrokenCase> {};
 
 TEST_P(CommandLineRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
-    const BrokenCase broken = GetParam();
-    ScratchDirectory scratch(broken.name);
-    writeBrokenCase(scratch, broken.from, broken.to);
-    const std::string original = slurp(defaultCase / "constant" / "slidesProperties");
-    const auto line =
-        1 + std::count(original.begin(), original.begin() + original.find(broken.from), '\n') +
-        broken.lineOffset;
-    const auto log = scratch.path / "log";
-    EXPECT_EQ(runCli(scratch.path.string() + " --quiet", log), 2);
-    const std::string message = slurp(log);
-    const std::string where = "slidesProperties:" + std::to_string(line) + ": ";
-    EXPECT_NE(message.find(where + broken.expected), std::string::npos)
-        << "expected '" << where << broken.expected << "' in:\n"
-        << message;
-    EXPECT_EQ(message.find("error:"), message.rfind("error:")) << "one message: " << message;
-    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"))
-        << "bad input must not create output";
+    test::expectRefused(GetParam());
 }
 
-const BrokenCase brokenCases[] = {
+const test::BrokenCase brokenCases[] = {
     {"unknownKey", "    density     5680;", "    density     5680;\n    densty 1;", 1,
      "key 'particles.densty': unknown key; valid keys here are:"},
     {"wrongType", "    count       8000;", "    count       many;", 0,

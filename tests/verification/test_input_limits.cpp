@@ -1,0 +1,57 @@
+// ctest-labels: robustness run
+// Parseable values past any real case, which once ended in an internal error, a hang or an
+// allocation failure, some after writing files: each is refused with exit status 2 and one
+// message naming its key before the output directory exists. The bounds are those of the key
+// table (config/scene_keys.cpp), the step and frame limits of run/run_limits.h, the machine's
+// memory, and the nozzle disc inside the domain box (run/nozzle_check.h).
+#include "../support/broken_cases.h"
+
+#include <gtest/gtest.h>
+
+namespace slides {
+namespace {
+
+class InputLimits : public ::testing::TestWithParam<test::BrokenCase> {};
+
+TEST_P(InputLimits, RefusedWithExitStatus2BeforeAnythingIsWritten) {
+    test::expectRefused(GetParam());
+}
+
+const test::BrokenCase limitCases[] = {
+    {"densityPastAnyMaterial", "    density     5680;", "    density     1e308;", 0,
+     "key 'particles.density': must be at most 100000"},
+    {"radiusPastAnyParticle", "        value   80e-6;", "        value   1e308;", 0,
+     "key 'particles.radiusDistribution.value': must be at most 1"},
+    {"nozzleVelocityPastAnyJet", "        nozzleVelocity  25;", "        nozzleVelocity  1e308;", 0,
+     "key 'carrier.analyticJetCoeffs.nozzleVelocity': must be at most 10000"},
+    // 1e12 particles of at least 64 bytes each: 6.4e13 bytes, more than any machine here.
+    {"particlesPastTheMemory", "    count       8000;", "    count       1000000000000;", 0,
+     "key 'particles.count': 1000000000000 particles need at least 6.4e+13 bytes, more than the "
+     "machine's memory"},
+    // 1e15 grid points of at least 48 bytes each.
+    {"carrierGridPastTheMemory", "    carrierResolution   (141 61 61);",
+     "    carrierResolution   (100000 100000 100000);", 0,
+     "key 'output.carrierResolution': the carrier grid's 100000×100000×100000 points need at "
+     "least 4.8e+16 bytes, more than the machine's memory"},
+    {"historyAccuracyPastDoublePrecision", "    drag        haiderLevenspiel;",
+     "    drag        haiderLevenspiel;\n    history { model basset; accuracy 1e-300; }", 1,
+     "key 'physics.history.accuracy': must be at least 1e-10"},
+    // endTime 0.1 s over the interval and the step.
+    {"framesPastTheLimit", "    interval            5e-4;", "    interval            1e-300;", 0,
+     "key 'output.interval': gives 1e+299 frames to time.endTime 0.1 s, more than the 1e+06 a "
+     "run may write"},
+    {"stepsPastTheLimit", "    dt              1e-5;", "    dt              1e-12;", 0,
+     "key 'time.dt': gives 1e+11 steps to time.endTime 0.1 s, more than the 1e+09 a run may "
+     "take"},
+    // A disc of radius 0.04 m about the centre of a domain 0.06 m across: its parts beyond
+    // |y| or |z| = 0.03 m, 29 % of its area, hold 140 of the 512 points.
+    {"nozzleDiscPastTheDomainBox", "    radius      2e-3;", "    radius      0.04;", 0,
+     "key 'nozzle.radius': the nozzle disc of radius 0.04 m is not inside the domain box: 27 % "
+     "of it (140 of 512 points spread evenly over it) lies outside"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Values, InputLimits, ::testing::ValuesIn(limitCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+} // namespace
+} // namespace slides
