@@ -3,7 +3,7 @@
 // allocation failure, some after writing files: each is refused with exit status 2 and one
 // message naming its key before the output directory exists. The bounds are those of the key
 // table (config/scene_keys.cpp), the step and frame limits of run/run_limits.h, the machine's
-// memory, and the nozzle disc inside the domain box (run/nozzle_check.h).
+// memory, and the nozzle disc or lattice inside the domain box (run/injection_check.h).
 #include "../support/broken_cases.h"
 
 #include <gtest/gtest.h>
@@ -48,6 +48,14 @@ const test::BrokenCase limitCases[] = {
     {"nozzleDiscPastTheDomainBox", "    radius      2e-3;", "    radius      0.04;", 0,
      "key 'nozzle.radius': the nozzle disc of radius 0.04 m is not inside the domain box: 27 % "
      "of it (140 of 512 points spread evenly over it) lies outside"},
+    // Sites 1 mm apart from x = 0.0605 m: 5 of the 20 planes of 400 sites lie before the
+    // domain's end at x = 0.065 m, the other 6000 sites beyond it.
+    {"latticePastTheDomainBox", "    mode            rate;",
+     "    mode            lattice;\n    latticeCoeffs { origin (0.06 0 0); spacing 1e-3; sites (20 "
+     "20 20); }",
+     1,
+     "key 'injection.latticeCoeffs.origin': the lattice of 8000 sites is not inside the domain "
+     "box: 75 % of it (6000 of 8000 points spread evenly over it) lies outside"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Values, InputLimits, ::testing::ValuesIn(limitCases),

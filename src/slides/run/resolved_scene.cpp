@@ -3,7 +3,7 @@
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
-#include "slides/run/nozzle_check.h"
+#include "slides/run/injection_check.h"
 #include "slides/run/run_limits.h"
 #include "slides/surfaces/patch_wall.h"
 
@@ -44,7 +44,7 @@ ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
     applyOverrides(overrides, scene);
     std::unique_ptr<const CarrierField> carrier = carrierOf(scene);
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
-    requireNozzleDiscInside(scene, *carrier);
+    requireInjectionInside(scene, *carrier);
     scene.surfaces = placePatchSurfaces(scene.surfaces, *carrier, scene.dictionaryFile);
     SceneAnalysis analysis = analyseScene(scene, *carrier);
     applyAnalysis(analysis, scene);

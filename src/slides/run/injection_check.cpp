@@ -1,7 +1,8 @@
-#include "slides/run/nozzle_check.h"
+#include "slides/run/injection_check.h"
 
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
+#include "slides/integrate/injector.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +17,10 @@ namespace slides {
 
 namespace {
 
-constexpr int rings = 16;         // of equal area, so each point stands for an equal share
-constexpr int pointsPerRing = 32; // of the disc
-constexpr int pointsOnLine = 129; // a 2-D mesh's slot, evenly spaced across it
+constexpr int rings = 16;             // of equal area, so each point stands for an equal share
+constexpr int pointsPerRing = 32;     // of the disc
+constexpr int pointsOnLine = 129;     // a 2-D mesh's slot, evenly spaced across it
+constexpr long latticeSamples = 4096; // sites checked at most, evenly spread over the fill order
 
 /// Points spread evenly over the disc, or over its diameter in the plane of a 2-D carrier.
 std::vector<Vec3> discPoints(const JetNozzle& nozzle, const std::optional<Vec3>& planeNormal) {
@@ -60,26 +62,48 @@ std::size_t countOutsideBox(std::span<const Vec3> points, const Box& box) {
     }));
 }
 
-[[noreturn]] void refuse(const Scene& scene, std::size_t outside, std::size_t points,
-                         const std::string& where) {
-    std::ostringstream message;
-    message << "the nozzle disc of radius " << scene.nozzle.radius << " m is not inside " << where
-            << ": " << std::lround(100.0 * outside / points) << " % of it (" << outside << " of "
-            << points << " points spread evenly over it) lies outside";
-    throw InputError(scene.dictionaryFile.string(), keyLine(scene.dictionaryFile, "nozzle.radius"),
-                     "nozzle.radius", message.str());
+/// The sites particles.count particles take on the lattice, or an even selection of them.
+std::vector<Vec3> latticePoints(const Scene& scene) {
+    const long count = scene.particles.count;
+    const long stride = std::max(1L, count / latticeSamples);
+    std::vector<Vec3> points;
+    for (long id = 0; id < count; id += stride)
+        points.push_back(latticeSite(scene.injection, static_cast<ParticleId>(id)));
+    return points;
+}
+
+/// Refuses the start when points lie outside the mesh or the domain box given.
+void requireInside(const Scene& scene, const CarrierField& carrier, std::span<const Vec3> points,
+                   const std::string& key, const std::string& what) {
+    const auto refuse = [&](std::size_t outside, const std::string& where) {
+        std::ostringstream message;
+        message << what << " is not inside " << where << ": "
+                << std::lround(100.0 * static_cast<double>(outside) /
+                               static_cast<double>(points.size()))
+                << " % of it (" << outside << " of " << points.size()
+                << " points spread evenly over it) lies outside";
+        throw InputError(scene.dictionaryFile.string(), keyLine(scene.dictionaryFile, key), key,
+                         message.str());
+    };
+    if (const std::size_t outside = countOutsideMesh(points, carrier); outside > 0)
+        refuse(outside, "the OpenFOAM mesh");
+    if (scene.domainFromCarrier) return; // the mesh is the domain
+    if (const std::size_t outside = countOutsideBox(points, scene.domain); outside > 0)
+        refuse(outside, "the domain box");
 }
 
 } // namespace
 
-void requireNozzleDiscInside(const Scene& scene, const CarrierField& carrier) {
-    if (scene.injection.mode == InjectionMode::lattice) return; // the nozzle injects nothing
-    const std::vector<Vec3> points = discPoints(scene.nozzle, carrier.planeNormal());
-    if (const std::size_t outside = countOutsideMesh(points, carrier); outside > 0)
-        refuse(scene, outside, points.size(), "the OpenFOAM mesh");
-    if (scene.domainFromCarrier) return; // the mesh is the domain
-    if (const std::size_t outside = countOutsideBox(points, scene.domain); outside > 0)
-        refuse(scene, outside, points.size(), "the domain box");
+void requireInjectionInside(const Scene& scene, const CarrierField& carrier) {
+    if (scene.injection.mode == InjectionMode::lattice) {
+        requireInside(scene, carrier, latticePoints(scene), "injection.latticeCoeffs.origin",
+                      "the lattice of " + std::to_string(scene.particles.count) + " sites");
+        return;
+    }
+    std::ostringstream disc;
+    disc << "the nozzle disc of radius " << scene.nozzle.radius << " m";
+    requireInside(scene, carrier, discPoints(scene.nozzle, carrier.planeNormal()), "nozzle.radius",
+                  disc.str());
 }
 
 } // namespace slides
