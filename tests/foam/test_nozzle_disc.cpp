@@ -1,12 +1,16 @@
 // ctest-labels: robustness carrier
+// foam-cases: planarJet
 // The nozzle disc must lie inside the mesh: a disc partly outside would inject its particles
 // outside, where they escape at once. On the boxAscii mesh (about 0.12 × 0.11 × 0.12 m) a disc
 // of radius 0.08 m about (0.05 0.05 0.06) reaches past the walls and is refused; one of radius
-// 0.01 m about the same centre lies inside and runs.
+// 0.01 m about the same centre lies inside and runs. On the 2-D planarJet mesh (0.2 × 0.05 m,
+// 1 mm thick) the disc is the slot's line in the plane: 8 mm about y = 0.02 m fits, 30 mm
+// reaches below y = 0.
 #include "../support/case_runs.h"
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 
 namespace slides {
@@ -14,8 +18,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The boxAscii mesh with a uniform U and the impinging jet's dictionary, its nozzle moved into
-/// the box with the given radius.
+/// The impinging jet's dictionary with its nozzle at centre with radius, its target at x = 0.06.
+void writeDictionary(const fs::path& directory, const std::string& centre,
+                     const std::string& radius) {
+    std::string dictionary = test::slurp(fs::path(SLIDES_SOURCE_DIR) /
+                                         "foamCases/impingingJet/constant/slidesProperties");
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        const auto at = dictionary.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        dictionary.replace(at, from.size(), to);
+    };
+    replace("centre      (0 0 0);", "centre      " + centre + ";");
+    replace("radius      2e-3;", "radius      " + radius + ";");
+    std::ofstream(directory / "constant" / "slidesProperties") << dictionary;
+}
+
+/// The boxAscii mesh with a uniform U, its nozzle moved into the box with the given radius.
 void writeBoxCase(const fs::path& directory, const std::string& radius) {
     fs::copy(fs::path(SLIDES_SOURCE_DIR) / "tests/foam/data/boxAscii/constant",
              directory / "constant", fs::copy_options::recursive);
@@ -26,16 +44,7 @@ void writeBoxCase(const fs::path& directory, const std::string& radius) {
            "    inlet { type fixedValue; value uniform (1 0 0); }\n"
            "    outlet { type zeroGradient; }\n    walls { type noSlip; }\n"
            "    sides { type symmetry; }\n}\n";
-    std::string dictionary = test::slurp(fs::path(SLIDES_SOURCE_DIR) /
-                                         "foamCases/impingingJet/constant/slidesProperties");
-    const auto replace = [&](const std::string& from, const std::string& to) {
-        const auto at = dictionary.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        dictionary.replace(at, from.size(), to);
-    };
-    replace("centre      (0 0 0);", "centre      (0.05 0.05 0.06);");
-    replace("radius      2e-3;", "radius      " + radius + ";");
-    std::ofstream(directory / "constant" / "slidesProperties") << dictionary;
+    writeDictionary(directory, "(0.05 0.05 0.06)", radius);
 }
 
 TEST(NozzleDisc, PartlyOutsideTheMeshIsRefused) {
@@ -62,6 +71,40 @@ TEST(NozzleDisc, InsideTheMeshIsAccepted) {
     const fs::path log = scratch.path / "log";
     EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet --end-time 1e-4", log), 0)
         << test::slurp(log);
+}
+
+/// The solved planarJet case with its nozzle on the slot's plane at y = 0.02 m, z = 0.5 mm.
+void writePlanarCase(const fs::path& directory, const std::string& radius) {
+    const fs::path run = fs::path(SLIDES_FOAM_RUNS_DIR) / "planarJet";
+    fs::copy(run / "constant", directory / "constant", fs::copy_options::recursive);
+    for (const auto& entry : fs::directory_iterator(run))
+        if (entry.is_directory() && std::isdigit(entry.path().filename().string()[0]) &&
+            entry.path().filename() != "0")
+            fs::copy(entry.path(), directory / entry.path().filename(),
+                     fs::copy_options::recursive);
+    writeDictionary(directory, "(0.01 0.02 0.0005)", radius);
+}
+
+TEST(NozzleDisc, OnATwoDimensionalMeshItIsTheSlotInThePlane) {
+    test::ScratchDirectory scratch("nozzleSlotInside");
+    writePlanarCase(scratch.path, "8e-3");
+    const fs::path log = scratch.path / "log";
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet --end-time 1e-4", log), 0)
+        << test::slurp(log);
+}
+
+TEST(NozzleDisc, SlotPartlyOutsideATwoDimensionalMeshIsRefused) {
+    test::ScratchDirectory scratch("nozzleSlotOutside");
+    writePlanarCase(scratch.path, "0.03");
+    const fs::path log = scratch.path / "log";
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", log), 2);
+    // The slot from y = -0.01 to 0.05 m: its sixth below y = 0, 21 of the 129 points, is outside.
+    const std::string message = test::slurp(log);
+    EXPECT_NE(message.find(":28: key 'nozzle.radius': the nozzle disc of radius 0.03 m is not "
+                           "inside the OpenFOAM mesh: 16 % of it (21 of 129 points spread evenly "
+                           "over it) lies outside"),
+              std::string::npos)
+        << message;
 }
 
 } // namespace
