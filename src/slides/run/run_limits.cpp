@@ -36,23 +36,23 @@ void requireFitsInMemory(const Scene& scene, const std::string& key, double byte
     refuse(scene, key, message.str());
 }
 
+/// Refuses at key a run of count steps or frames (things) past its limit.
+void requireCountWithin(const Scene& scene, const std::string& key, double count, double limit,
+                        const char* things, const char* verb) {
+    if (!(count > limit)) return;
+    std::ostringstream message;
+    message << "gives " << count << " " << things << " to time.endTime " << scene.time.endTime
+            << " s, more than the " << limit << " a run may " << verb;
+    refuse(scene, key, message.str());
+}
+
 } // namespace
 
 void requireRunWithinLimits(const Scene& scene) {
-    const double steps = scene.time.endTime / scene.time.dt;
-    if (steps > maximumSteps) {
-        std::ostringstream message;
-        message << "gives " << steps << " steps to time.endTime " << scene.time.endTime
-                << " s, more than the " << maximumSteps << " a run may take";
-        refuse(scene, "time.dt", message.str());
-    }
-    const double frames = scene.time.endTime / scene.output.interval;
-    if (frames > maximumFrames) {
-        std::ostringstream message;
-        message << "gives " << frames << " frames to time.endTime " << scene.time.endTime
-                << " s, more than the " << maximumFrames << " a run may write";
-        refuse(scene, "output.interval", message.str());
-    }
+    requireCountWithin(scene, "time.dt", scene.time.endTime / scene.time.dt, maximumSteps, "steps",
+                       "take");
+    requireCountWithin(scene, "output.interval", scene.time.endTime / scene.output.interval,
+                       maximumFrames, "frames", "write");
     requireFitsInMemory(scene, "particles.count",
                         static_cast<double>(scene.particles.count) * bytesPerParticle,
                         std::to_string(scene.particles.count) + " particles");
