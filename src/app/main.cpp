@@ -4,20 +4,35 @@
 //     slides-track CASE --output DIR --dt 1e-5 --threads 2
 //     slides-track foamCases/impingingJet --time 500     # an OpenFOAM case, its time 500
 //     slides-track CASE --checkpoint-every 500     # after a crash: slides-track CASE --restart
+//     mpirun -np 4 slides-track CASE -parallel     # a decomposed case, one rank a processor*/
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
 #include "slides/core/thread_waits.h"
 #include "slides/io/atomic_file.h"
+#include "slides/run/rank_agreement.h"
 #include "slides/run/run_case.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string_view>
 
 int main(int argc, char** argv) {
     slides::sleepWhileWaitingForWork(argv);
+    // OpenFOAM's single-dash -parallel: MPI starts only then, so serial runs need no mpirun.
+    bool parallel = false;
+    for (int a = 1; a < argc; ++a)
+        if (std::string_view(argv[a]) == "-parallel" || std::string_view(argv[a]) == "--parallel") {
+            argv[a] = const_cast<char*>("--parallel");
+            parallel = true;
+        }
+    std::optional<slides::MpiSession> mpi;
+    if (parallel) mpi.emplace(argc, argv);
+    const slides::RankCommunicator ranks =
+        parallel ? slides::RankCommunicator::world() : slides::RankCommunicator{};
     CLI::App app{"slides-track: Lagrangian particle tracking in a carrier-gas jet.\n"
                  "CASE holds constant/slidesProperties; results go to CASE/slides/."};
     slides::RunOptions options;
@@ -37,6 +52,8 @@ int main(int argc, char** argv) {
     app.add_flag("--restart", options.restart,
                  "continue from OUTPUT/checkpoint.h5; results identical to an uninterrupted run");
     app.add_flag("--quiet", options.quiet, "no progress display or report");
+    app.add_flag("--parallel", options.parallel,
+                 "-parallel under mpirun: the case's processor*/ decomposition, one part a rank");
     app.add_flag("--list-keys", listKeys,
                  "print the table of slidesProperties keys (markdown) and exit");
     app.set_version_flag("--version", std::string("slides-track ") + SLIDES_VERSION);
@@ -54,17 +71,26 @@ int main(int argc, char** argv) {
         std::cerr << "slides-track: error: no CASE directory given (see --help)\n";
         return 2;
     }
+    // In parallel, an error every rank agreed on is printed once (by rank 0) and every rank
+    // returns; one found by a rank alone ends the whole job through MPI_Abort with its status.
+    const auto fail = [&](const std::exception& error, const char* kind, int status) {
+        const bool agreed = dynamic_cast<const slides::AgreedError*>(&error) != nullptr;
+        if (!agreed || ranks.rank() == 0)
+            std::fprintf(stderr, "\nslides-track: %s: %s\n", kind, error.what());
+        if (ranks.parallel() && !agreed) {
+            std::fflush(stderr);
+            ranks.abort(status);
+        }
+        return status;
+    };
     try {
-        slides::runCase(options);
+        slides::runCase(options, ranks);
         return 0;
     } catch (const slides::InputError& error) {
-        std::fprintf(stderr, "\nslides-track: error: %s\n", error.what());
-        return 2;
+        return fail(error, "error", 2);
     } catch (const slides::OutputError& error) {
-        std::fprintf(stderr, "\nslides-track: error: %s\n", error.what());
-        return 2;
+        return fail(error, "error", 2);
     } catch (const std::exception& error) {
-        std::fprintf(stderr, "\nslides-track: internal error: %s\n", error.what());
-        return 1;
+        return fail(error, "internal error", 1);
     }
 }

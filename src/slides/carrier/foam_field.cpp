@@ -42,6 +42,12 @@ template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
         values.assign(static_cast<std::size_t>(count), element<T>(in));
     } else if (kind == "nonuniform") {
         const std::string type = in.word();
+        if (type == "0" && count == 0) { // `nonuniform 0()`: decomposePar's empty patch part
+            in.expect('(');
+            in.expect(')');
+            in.expect(';');
+            return values;
+        }
         if (type != FieldTraits<T>::listType)
             in.fail("expected " + std::string(FieldTraits<T>::listType) + ", found '" + type + "'");
         values = in.list<T>(count);

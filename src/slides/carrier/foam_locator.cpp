@@ -187,7 +187,10 @@ TetLocation FoamLocator::locateFrom(const Vec3& point, int startTet) const {
     if (const TetLocation walked = walk(point, startTet, boundaryFace); walked.found())
         return walked;
     TetLocation searched = locateGlobally(point);
-    if (!searched.found() && boundaryFace >= 0) searched.exitPatch = mesh_.facePatch[boundaryFace];
+    if (!searched.found() && boundaryFace >= 0) {
+        searched.exitPatch = mesh_.facePatch[boundaryFace];
+        searched.exitFace = boundaryFace;
+    }
     return searched;
 }
 

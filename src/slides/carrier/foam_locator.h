@@ -27,7 +27,7 @@ namespace slides {
 /// A point inside tetrahedron (cell, face, edge), of index tet, with barycentric weights of its
 /// vertices (cell centre, face point-average, face point edge, face point edge + 1); cell −1
 /// when the point is outside the mesh, then exitPatch is the patch the search left through (or
-/// −1).
+/// −1) and exitFace the boundary face the walk reached (−1 when not known).
 struct TetLocation {
     int cell = -1;
     int face = -1;
@@ -35,6 +35,7 @@ struct TetLocation {
     std::array<double, 4> weights{};
     int exitPatch = -1;
     int tet = -1;
+    int exitFace = -1;
 
     bool found() const { return cell >= 0; }
 };

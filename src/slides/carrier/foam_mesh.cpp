@@ -17,6 +17,7 @@ PatchType patchTypeNamed(const std::string& type) {
     if (type == "symmetry" || type == "symmetryPlane") return PatchType::symmetry;
     if (type == "wedge") return PatchType::wedge;
     if (type == "empty") return PatchType::empty;
+    if (type == "processor") return PatchType::processor;
     return PatchType::patch; // patch and the rest (mapped, cyclic, ...) bound the domain alike
 }
 
@@ -38,6 +39,8 @@ std::vector<FoamPatch> readBoundary(const std::filesystem::path& file) {
             } else if (key == "startFace") {
                 patch.start = static_cast<int>(in.label());
                 hasStart = true;
+            } else if (key == "neighbProcNo") {
+                patch.neighbourRank = static_cast<int>(in.label());
             } else {
                 in.skipValue();
                 continue;
@@ -46,6 +49,8 @@ std::vector<FoamPatch> readBoundary(const std::filesystem::path& file) {
         }
         in.expect('}');
         if (!hasSize || !hasStart) in.fail("patch " + patch.name + " lacks nFaces or startFace");
+        if (patch.type == PatchType::processor && patch.neighbourRank < 0)
+            in.fail("processor patch " + patch.name + " lacks neighbProcNo");
     }
     in.expect(')');
     return patches;
@@ -92,7 +97,13 @@ void requireUntangledCells(const FoamMesh& mesh, const std::filesystem::path& di
 } // namespace
 
 std::vector<FoamPatch> readFoamBoundary(const std::filesystem::path& caseDirectory) {
-    return readBoundary(caseDirectory / "constant" / "polyMesh" / "boundary");
+    const auto whole = caseDirectory / "constant" / "polyMesh" / "boundary";
+    const auto part = caseDirectory / "processor0" / "constant" / "polyMesh" / "boundary";
+    if (FoamFile::exists(whole) || !FoamFile::exists(part)) return readBoundary(whole);
+    // A decomposed case: every part lists the case's patches, then its processor patches.
+    std::vector<FoamPatch> patches = readBoundary(part);
+    std::erase_if(patches, [](const FoamPatch& p) { return p.type == PatchType::processor; });
+    return patches;
 }
 
 FoamMesh readFoamMesh(const std::filesystem::path& caseDirectory) {

@@ -6,6 +6,7 @@
 // average of the face centres), so the cell centres agree with OpenFOAM's C to round-off.
 //
 //     constant/polyMesh/{points,faces,owner,neighbour,boundary}[.gz], ascii or binary
+//     processor<N>/constant/polyMesh likewise, with `processor` patches (neighbProcNo)
 #pragma once
 
 #include "slides/core/vector.h"
@@ -18,13 +19,16 @@
 
 namespace slides {
 
-enum class PatchType { patch, wall, symmetry, wedge, empty };
+/// processor: the faces a decomposed case shares with the part of rank neighbourRank (its face i
+/// is face i of the matching patch there); neither a wall nor an exit.
+enum class PatchType { patch, wall, symmetry, wedge, empty, processor };
 
 struct FoamPatch {
     std::string name;
     PatchType type = PatchType::patch;
-    int start = 0; ///< first face
-    int size = 0;  ///< number of faces
+    int start = 0;          ///< first face
+    int size = 0;           ///< number of faces
+    int neighbourRank = -1; ///< processor patch: neighbProcNo
 };
 
 struct FoamMesh {
@@ -67,7 +71,8 @@ struct FoamMesh {
     void computeGeometry();
 };
 
-/// Reads CASE/constant/polyMesh/boundary alone; InputError naming the file on bad content.
+/// Reads CASE/constant/polyMesh/boundary alone (a decomposed case without the whole mesh:
+/// processor0's, its processor patches left out); InputError naming the file on bad content.
 std::vector<FoamPatch> readFoamBoundary(const std::filesystem::path& caseDirectory);
 
 /// Reads CASE/constant/polyMesh; InputError naming the file on bad or inconsistent content.

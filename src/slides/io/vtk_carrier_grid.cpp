@@ -13,8 +13,9 @@
 
 namespace slides {
 
-void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carrier, const Box& box,
-                     std::array<int, 3> pointsPerAxis, double time) {
+namespace {
+
+Vec3 latticeSpacing(const Box& box, std::array<int, 3> pointsPerAxis) {
     Vec3 spacing;
     for (int axis = 0; axis < 3; ++axis) {
         if (pointsPerAxis[axis] < 1)
@@ -23,6 +24,14 @@ void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carr
                             ? (box.max[axis] - box.min[axis]) / (pointsPerAxis[axis] - 1)
                             : 1.0;
     }
+    return spacing;
+}
+
+} // namespace
+
+CarrierSample sampleCarrierLattice(const CarrierField& carrier, const Box& box,
+                                   std::array<int, 3> pointsPerAxis, double time) {
+    const Vec3 spacing = latticeSpacing(box, pointsPerAxis);
     // VTK orders lattice points with x fastest, then y, then z.
     std::vector<Vec3> points;
     points.reserve(static_cast<std::size_t>(pointsPerAxis[0]) * pointsPerAxis[1] *
@@ -33,8 +42,14 @@ void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carr
                 points.push_back(box.min + Vec3(i, j, k).cwiseProduct(spacing));
     CarrierSample gas;
     carrier.sample(points, time, CarrierNeeds{}, gas);
+    return gas;
+}
 
-    const auto count = static_cast<vtkIdType>(points.size());
+void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carrier, const Box& box,
+                     std::array<int, 3> pointsPerAxis, double time) {
+    const Vec3 spacing = latticeSpacing(box, pointsPerAxis);
+    const CarrierSample gas = sampleCarrierLattice(carrier, box, pointsPerAxis, time);
+    const auto count = static_cast<vtkIdType>(gas.velocity.size());
     auto velocity = namedDoubleArray("U", 3, count);
     auto speed = namedDoubleArray("magU", 1, count);
     for (vtkIdType n = 0; n < count; ++n) {

@@ -19,4 +19,9 @@ namespace slides {
 void writeCarrierVti(const std::filesystem::path& file, const CarrierField& carrier, const Box& box,
                      std::array<int, 3> pointsPerAxis, double time);
 
+/// The sample writeCarrierVti writes, without writing it (the ranks of a parallel run that do
+/// not write take part in the sampling so).
+CarrierSample sampleCarrierLattice(const CarrierField& carrier, const Box& box,
+                                   std::array<int, 3> pointsPerAxis, double time);
+
 } // namespace slides

@@ -1,9 +1,11 @@
 #include "slides/run/resolved_scene.h"
 
+#include "slides/carrier/foam_decomposition.h"
 #include "slides/carrier/make_carrier.h"
 #include "slides/config/scene_reader.h"
 #include "slides/core/error.h"
 #include "slides/run/injection_check.h"
+#include "slides/run/rank_carrier.h"
 #include "slides/run/run_limits.h"
 #include "slides/surfaces/patch_wall.h"
 
@@ -39,10 +41,23 @@ std::unique_ptr<CarrierField> carrierOf(const Scene& scene) {
 }
 
 ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
-                           const SceneOverrides& overrides) {
+                           const SceneOverrides& overrides, const RankCommunicator& ranks) {
     Scene scene = readScene(caseDirectory);
     applyOverrides(overrides, scene);
-    std::unique_ptr<const CarrierField> carrier = carrierOf(scene);
+    const bool foam = scene.carrier.type == CarrierType::foamField;
+    if (ranks.parallel() && !foam)
+        throw InputError(scene.dictionaryFile.string(), 0, "carrier.type",
+                         "parallel runs (-parallel) need a decomposed OpenFOAM case, carrier type "
+                         "foamField, so far");
+    if (foam && !ranks.parallel()) requireDecompositionFits(caseDirectory, false, 1);
+    std::unique_ptr<const CarrierField> carrier =
+        ranks.parallel()
+            ? std::make_unique<RankCarrier>(caseDirectory,
+                                            FoamCarrierSettings{scene.carrier.foamTime,
+                                                                scene.carrier.interpolation,
+                                                                scene.carrier.latticeSpacing},
+                                            ranks)
+            : carrierOf(scene);
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
     requireInjectionInside(scene, *carrier);
     scene.surfaces = placePatchSurfaces(scene.surfaces, *carrier, scene.dictionaryFile);

@@ -11,6 +11,7 @@
 #include "slides/analysis/scene_analysis.h"
 #include "slides/carrier/carrier_field.h"
 #include "slides/config/scene.h"
+#include "slides/run/rank_communicator.h"
 #include "slides/run/run_options.h"
 
 #include <filesystem>
@@ -28,8 +29,10 @@ struct ResolvedScene {
 std::unique_ptr<CarrierField> carrierOf(const Scene& scene);
 
 /// Resolves the case in caseDirectory with the command line's overrides. Throws InputError
-/// naming file, line and key for bad input, before anything is written.
+/// naming file, line and key for bad input, before anything is written. A parallel run's ranks
+/// each read their processor part of a decomposed case (run/rank_carrier.h) and resolve the
+/// same scene (the pilots of the scene analysis run on every rank alike).
 ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
-                           const SceneOverrides& overrides);
+                           const SceneOverrides& overrides, const RankCommunicator& ranks = {});
 
 } // namespace slides

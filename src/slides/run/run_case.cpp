@@ -2,7 +2,10 @@
 
 #include "slides/io/progress.h"
 #include "slides/io/run_output.h"
+#include "slides/io/vtk_carrier_grid.h"
 #include "slides/io/vtk_deposit.h"
+#include "slides/run/rank_agreement.h"
+#include "slides/run/rank_gather.h"
 #include "slides/run/resolved_scene.h"
 #include "slides/run/run_checkpoint.h"
 #include "slides/run/run_report.h"
@@ -10,32 +13,115 @@
 
 #include <omp.h>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 
 namespace slides {
 
-void runCase(const RunOptions& options) {
+namespace {
+
+/// What a parallel run does not do yet: refused before anything is written (exit status 2).
+void requireParallelSupport(const RunOptions& options, const Scene& scene) {
+    const auto refuse = [](const std::string& file, const std::string& key,
+                           const std::string& what) {
+        throw AgreedInputError(
+            InputError(file, 0, key, what + " is not supported in parallel runs yet"));
+    };
+    if (options.checkpointEvery > 0 || options.restart)
+        refuse("command line", options.restart ? "--restart" : "--checkpoint-every",
+               "checkpointing");
+    const std::string dictionary = scene.dictionaryFile.string();
+    if (scene.collisions.model != CollisionModel::none)
+        refuse(dictionary, "collisions.model", "colliding particles (ghosts across ranks)");
+    for (const Surface& surface : scene.surfaces)
+        if (surface.interaction == SurfaceInteraction::deposit)
+            refuse(dictionary, "surfaces." + surface.name + ".interaction",
+                   "a deposit (ghosts across ranks)");
+}
+
+/// The scene resolved on every rank; an input error is one every rank finds alike.
+ResolvedScene resolveOnEveryRank(const RunOptions& options, const RankCommunicator& ranks) {
+    if (!ranks.parallel()) return resolveScene(options.caseDirectory, options.overrides);
+    try {
+        ResolvedScene resolved = resolveScene(options.caseDirectory, options.overrides, ranks);
+        requireParallelSupport(options, resolved.scene);
+        return resolved;
+    } catch (const AgreedError&) {
+        throw;
+    } catch (const InputError& error) {
+        throw AgreedInputError(error);
+    }
+}
+
+/// Per rank: moving particles, particle-steps, stepping and exchange seconds, particles and
+/// bytes sent, under summary.json's performance.ranks.
+nlohmann::json rankFigures(const RankCommunicator& ranks, const Stepper& stepper,
+                           const RankExchange& exchange, double steppingSeconds) {
+    const RankExchangeFigures& own = exchange.figures();
+    const std::array<double, 6> mine{static_cast<double>(stepper.cloud().size()),
+                                     static_cast<double>(stepper.particleSteps()),
+                                     steppingSeconds,
+                                     own.seconds,
+                                     static_cast<double>(own.particlesSent),
+                                     static_cast<double>(own.bytesSent)};
+    const auto bytes = std::as_bytes(std::span(mine));
+    nlohmann::json figures = nlohmann::json::array();
+    for (const Bytes& part : ranks.gather(bytes)) {
+        std::array<double, 6> theirs{};
+        std::memcpy(theirs.data(), part.data(), sizeof theirs);
+        figures.push_back({{"moving", theirs[0]},
+                           {"particleSteps", theirs[1]},
+                           {"steppingSeconds", theirs[2]},
+                           {"exchangeSeconds", theirs[3]},
+                           {"particlesSent", theirs[4]},
+                           {"bytesSent", theirs[5]}});
+    }
+    return figures;
+}
+
+} // namespace
+
+void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
     omp_set_num_threads(threads);
-    const ResolvedScene resolved = resolveScene(options.caseDirectory, options.overrides);
+    const ResolvedScene resolved = resolveOnEveryRank(options, ranks);
     const Scene& scene = resolved.scene;
     const CarrierField& carrier = *resolved.carrier;
-    if (!options.quiet) describeRun(resolved, threads);
+    // A parallel run: rank 0 writes what every rank gathers to it.
+    const bool writes = ranks.rank() == 0;
+    const bool quiet = options.quiet || !writes;
+    if (!quiet) describeRun(resolved, threads);
 
     const auto outputDirectory =
         options.output.empty() ? options.caseDirectory / "slides" : options.output;
     const RunFingerprint fingerprint = fingerprintOf(scene.dictionaryFile, scene.time.dt);
     std::optional<CheckpointState> resumed;
     if (options.restart) resumed = readCheckpoint(outputDirectory, scene.output.hdf5, fingerprint);
-    RunOutput output(outputDirectory, runOutputSettings(scene),
-                     resumed ? &resumed->frames : nullptr);
-    if (scene.carrier.type != CarrierType::none) // no gas, nothing to show
-        output.writeCarrier(carrier, scene.domain);
-    Stepper stepper(scene, carrier);
-    ProgressDisplay progress(stderr, options.quiet);
-
+    std::optional<RunOutput> output;
+    agreeOnFailure(ranks, [&] {
+        if (writes)
+            output.emplace(outputDirectory, runOutputSettings(scene),
+                           resumed ? &resumed->frames : nullptr);
+        if (scene.carrier.type == CarrierType::none) return; // no gas, nothing to show
+        if (writes)
+            output->writeCarrier(carrier, scene.domain);
+        else
+            sampleCarrierLattice(carrier, scene.domain, scene.output.carrierResolution, 0.0);
+    });
+    std::optional<RankExchange> exchange;
+    if (ranks.parallel()) exchange.emplace(dynamic_cast<const RankCarrier&>(carrier));
+    Stepper stepper(scene, carrier, exchange ? &*exchange : nullptr);
+    ProgressDisplay progress(stderr, quiet);
+    // Every rank's part of the state, on the rank that writes.
+    const std::size_t exits = carrier.boundaryNames().size() + 1;
+    const auto writeFrame = [&] {
+        if (!ranks.parallel()) return output->writeFrame(stepper.snapshot());
+        const GatheredRun run = gatherRun(stepper.snapshot(), ranks, exits, scene.surfaces.size());
+        if (writes) output->writeFrame(run.snapshot());
+    };
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     Clock::duration stepping{};
@@ -48,18 +134,18 @@ void runCase(const RunOptions& options) {
                         (outputDirectory / checkpointFileName).c_str(), stepper.time(),
                         stepper.steps());
     } else {
-        output.writeFrame(stepper.snapshot());
+        writeFrame();
     }
     while (!stepper.finished()) {
         const auto stepStart = Clock::now();
         stepper.step();
         stepping += Clock::now() - stepStart;
         if (stepper.time() >= nextFrame * (1 - 1e-12) || stepper.finished()) {
-            output.writeFrame(stepper.snapshot());
+            writeFrame();
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
         }
         if (options.checkpointEvery > 0 && stepper.steps() % options.checkpointEvery == 0)
-            writeCheckpoint(output, stepper, nextFrame, fingerprint);
+            writeCheckpoint(*output, stepper, nextFrame, fingerprint);
         const long done = stepper.injected() - static_cast<long>(stepper.cloud().size());
         double fraction = stepper.time() / scene.time.endTime;
         if (scene.time.stopWhenAllDone)
@@ -73,11 +159,22 @@ void runCase(const RunOptions& options) {
                              carrier.describe(),
                              carrier.boundaryNames(),
                              carrier.figures()};
-    const RunSnapshot snapshot = stepper.snapshot();
-    const auto summary = runSummary(resolved, snapshot, metrics);
-    writeDeposit(output.directory(), scene.surfaces, snapshot.arrivals);
-    output.finish(snapshot, summary);
-    if (!options.quiet) reportRunEnd(snapshot, summary, output, metrics);
+    if (!ranks.parallel()) {
+        const RunSnapshot snapshot = stepper.snapshot();
+        const auto summary = runSummary(resolved, snapshot, metrics);
+        writeDeposit(output->directory(), scene.surfaces, snapshot.arrivals);
+        output->finish(snapshot, summary);
+        if (!options.quiet) reportRunEnd(snapshot, summary, *output, metrics);
+        return;
+    }
+    const GatheredRun run = gatherRun(stepper.snapshot(), ranks, exits, scene.surfaces.size());
+    const nlohmann::json perRank = rankFigures(ranks, stepper, *exchange, metrics.steppingSeconds);
+    if (!writes) return;
+    auto summary = runSummary(resolved, run.snapshot(), metrics);
+    summary["performance"]["ranks"] = perRank;
+    writeDeposit(output->directory(), scene.surfaces, run.arrivals);
+    output->finish(run.snapshot(), summary);
+    if (!options.quiet) reportRunEnd(run.snapshot(), summary, *output, metrics);
 }
 
 } // namespace slides

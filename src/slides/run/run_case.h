@@ -5,12 +5,14 @@
 //     slides::runCase({.caseDirectory = "foamCases/analyticSpray", .threads = 2});
 #pragma once
 
+#include "slides/run/rank_communicator.h"
 #include "slides/run/run_options.h"
 
 namespace slides {
 
 /// Runs the case; throws InputError for bad input (before anything is written) and
-/// OutputError when the results cannot be written.
-void runCase(const RunOptions& options);
+/// OutputError when the results cannot be written. Under -parallel, every rank of ranks runs
+/// its part of the decomposed case and rank 0 writes the results (run/rank_gather.h).
+void runCase(const RunOptions& options, const RankCommunicator& ranks = {});
 
 } // namespace slides

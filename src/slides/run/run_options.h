@@ -24,6 +24,7 @@ struct RunOptions {
     long checkpointEvery = 0; ///< steps between checkpoints; 0: none
     bool restart = false;     ///< continue from OUTPUT/checkpoint.h5
     bool quiet = false;       ///< no progress display or report
+    bool parallel = false;    ///< -parallel: the case's processor*/ parts, one a rank (MPI)
 };
 
 } // namespace slides

@@ -14,7 +14,7 @@
 
 namespace slides {
 
-Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
+Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* exchange)
     : scene_(scene),
       carrier_(carrier), drag_{scene.physics.drag, scene.fluid.density,
                                scene.fluid.kinematicViscosity, scene.particles.density},
@@ -37,6 +37,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
     if (scene.collisions.model == CollisionModel::softSphere)
         softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
+    exchange_ = exchange;
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
     buildStages();
 }
@@ -44,7 +45,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
 bool Stepper::finished() const {
     const double endTime = scene_.time.endTime;
     if (time_ >= endTime * (1 - 1e-12)) return true;
-    return scene_.time.stopWhenAllDone && injector_.finished() && cloud_.empty();
+    return scene_.time.stopWhenAllDone && injector_.finished() &&
+           (exchange_ ? exchange_->everyRankEmpty(cloud_.size()) : cloud_.empty());
 }
 
 long Stepper::collisions() const {
@@ -88,7 +90,9 @@ void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
 std::size_t Stepper::exitOf(std::size_t i) const {
     if (cloud_.carrierLocation.empty()) return 0;
     std::array<std::int32_t, 1> location{cloud_.carrierLocation[i]};
-    if (location[0] >= -1) { // left the box in this step (the mesh's, by default): and the mesh?
+    // Left the box in this step (the mesh's, by default): and the mesh? (The exchange stage
+    // has located every particle at its position already.)
+    if (location[0] >= -1 && !exchange_) {
         CarrierSample scratch;
         carrier_.sampleFrom(std::array<Vec3, 1>{cloud_.position[i]}, location, time_, {}, scratch);
     }
@@ -119,6 +123,7 @@ void Stepper::buildStages() {
     if (heating_.on()) stages_.push_back(&Stepper::heat);
     if (collisions_) stages_.push_back(&Stepper::collide);
     if (softSpheres_) stages_.push_back(&Stepper::kickByNewContacts);
+    if (exchange_) stages_.push_back(&Stepper::exchangeAcrossRanks);
     stages_.push_back(&Stepper::meetSurfaces);
 }
 
@@ -126,6 +131,7 @@ void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
 
 void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();
+    firstFresh_ = alreadyInFlight;
     injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
     stepLengths_.assign(cloud_.size(), h);
@@ -151,6 +157,13 @@ void Stepper::heat(double) {
     startTemperatures_ = cloud_.temperature;
     startTemperatures_.resize(cloud_.size(), scene_.particles.injectionTemperature);
     heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
+}
+
+void Stepper::exchangeAcrossRanks(double) {
+    // Entering particles another rank keeps take no step here.
+    particleSteps_ -= exchange_->exchange(
+        cloud_, firstFresh_,
+        {stepLengths_, startPositions_, startVelocities_, startTemperatures_, gas_.temperature});
 }
 
 void Stepper::collide(double) { collisions_->collide(cloud_, startPositions_, stepLengths_); }

@@ -25,6 +25,8 @@
 //      velocity and spin by half a step before 3 and, computed anew at the step's end, after
 //      it: velocity Verlet with the stream step as its drift (second order, symplectic
 //      without a gas);
+//   3d. in a parallel run, each particle goes to the rank whose part of the mesh holds it
+//      (run/rank_exchange.h), so the next stage finds its location current;
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
 //      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
@@ -46,6 +48,7 @@
 #include "slides/integrate/turbulent_dispersion.h"
 #include "slides/io/run_snapshot.h"
 #include "slides/physics/drag.h"
+#include "slides/run/rank_exchange.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/surface_impacts.h"
 
@@ -57,8 +60,9 @@ namespace slides {
 
 class Stepper {
 public:
-    /// Keeps references to scene and carrier: both must outlive the stepper.
-    Stepper(const Scene& scene, const CarrierField& carrier);
+    /// Keeps references to scene and carrier: both must outlive the stepper. A parallel run
+    /// passes its exchange (run/rank_exchange.h), which then is a stage of every step.
+    Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* exchange = nullptr);
     Stepper(Scene&&, const CarrierField&) = delete;
     Stepper(const Scene&, CarrierField&&) = delete;
 
@@ -119,6 +123,8 @@ private:
     void collide(double h);
     /// 3c (soft spheres). Loads at the step's end, the second half kick, wall rebounds counted.
     void kickByNewContacts(double h);
+    /// 3d. (parallel runs) particles handed to the rank that holds them.
+    void exchangeAcrossRanks(double h);
     /// 4. particles that touched a surface or left the domain leave the cloud.
     void meetSurfaces(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
@@ -150,6 +156,8 @@ private:
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
     std::vector<Stage> stages_;
+    RankExchange* exchange_ = nullptr; ///< parallel runs only
+    std::size_t firstFresh_ = 0;       ///< the particles that entered in this step start here
 
     // Scratch, reused every step.
     CarrierSample gas_;
