@@ -42,9 +42,11 @@ template <typename T> std::vector<T> readValues(FoamFile& in, int count) {
         values.assign(static_cast<std::size_t>(count), element<T>(in));
     } else if (kind == "nonuniform") {
         const std::string type = in.word();
-        if (type == "0" && count == 0) { // `nonuniform 0()`: decomposePar's empty patch part
-            in.expect('(');
-            in.expect(')');
+        if (type == "0" && count == 0) { // decomposePar's empty patch part: `0()`, binary `0`
+            if (in.peek() == '(') {
+                in.expect('(');
+                in.expect(')');
+            }
             in.expect(';');
             return values;
         }
