@@ -84,22 +84,49 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
             emptyNormal_ = mesh_.faceAreas[patch.start].normalized();
 
     const PointWeights weights(mesh_);
-    velocity_ = std::make_unique<InterpolableField<Vec3>>(
-        readFoamVolField<Vec3>(timeDirectory_, "U", mesh_), mesh_, weights);
+    // A part of a decomposed case keeps the fields as read for shareProcessorPoints().
+    const bool part =
+        std::any_of(mesh_.patches.begin(), mesh_.patches.end(),
+                    [](const FoamPatch& p) { return p.type == PatchType::processor; });
+    auto velocity = readFoamVolField<Vec3>(timeDirectory_, "U", mesh_);
+    velocity_ = std::make_unique<InterpolableField<Vec3>>(velocity, mesh_, weights);
+    if (part) velocityRead_ = std::move(velocity);
     // k, ε and T when present, each within its physical bound.
-    const auto optionalScalar = [&](const std::string& name, double minimum,
-                                    bool inclusive) -> std::unique_ptr<InterpolableField<double>> {
+    const auto optionalScalar = [&](const std::string& name, double minimum, bool inclusive,
+                                    std::optional<FoamVolField<double>>& read)
+        -> std::unique_ptr<InterpolableField<double>> {
         if (!FoamFile::exists(timeDirectory_ / name)) return nullptr;
         auto field = readFoamVolField<double>(timeDirectory_, name, mesh_);
         requireAtLeast(field, minimum, inclusive, name);
-        return std::make_unique<InterpolableField<double>>(std::move(field), mesh_, weights);
+        auto interpolable = std::make_unique<InterpolableField<double>>(field, mesh_, weights);
+        if (part) read = std::move(field);
+        return interpolable;
     };
-    k_ = optionalScalar("k", 0, true);
-    epsilon_ = optionalScalar("epsilon", 0, true);
-    temperature_ = optionalScalar("T", 0, false);
+    k_ = optionalScalar("k", 0, true, scalarsRead_[0]);
+    epsilon_ = optionalScalar("epsilon", 0, true, scalarsRead_[1]);
+    temperature_ = optionalScalar("T", 0, false, scalarsRead_[2]);
     if (settings_.interpolation == FoamInterpolation::cell)
         cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
     if (settings_.interpolation == FoamInterpolation::lattice) buildLattice(caseDirectory);
+}
+
+void FoamCarrier::shareProcessorPoints(const PartAddressing& addressing,
+                                       const PartAllGather& allGather) {
+    // A part without processor patches (the only one) shares no point, but takes part.
+    const SharedPointWeights shared(mesh_, addressing, allGather);
+    shared.apply(velocityRead_.value_or(FoamVolField<Vec3>{}), velocity_->points);
+    velocity_->refreshFaceMidpoints(mesh_);
+    const std::array<InterpolableField<double>*, 3> scalars{k_.get(), epsilon_.get(),
+                                                            temperature_.get()};
+    for (int s = 0; s < 3; ++s) {
+        if (!scalars[s]) continue;
+        shared.apply(scalarsRead_[s].value_or(FoamVolField<double>{}), scalars[s]->points);
+        scalars[s]->refreshFaceMidpoints(mesh_);
+        scalarsRead_[s].reset();
+    }
+    velocityRead_.reset();
+    if (settings_.interpolation == FoamInterpolation::cell)
+        cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
 }
 
 std::optional<LatticeNodeValues> FoamCarrier::cellPointValues(const Vec3& x, int& tet) const {

@@ -21,6 +21,7 @@
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/foam_lattice.h"
+#include "slides/carrier/foam_shared_points.h"
 
 #include <memory>
 #include <optional>
@@ -62,6 +63,9 @@ public:
     const FoamMesh& mesh() const { return mesh_; }
     const FoamLocator& locator() const { return *locator_; }
     const std::optional<WedgeFrame>& wedge() const { return wedge_; }
+    /// A part of a decomposed case: the values at points of its processor patches fitted over
+    /// every part's samples (carrier/foam_shared_points.h). Collective over the parts; once.
+    void shareProcessorPoints(const PartAddressing& addressing, const PartAllGather& allGather);
     /// The lattice scheme's lattice, null for the other schemes.
     const FoamLattice* lattice() const { return lattice_.get(); }
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
@@ -93,7 +97,11 @@ private:
     std::optional<Vec3> emptyNormal_; ///< 2-D mesh: sampled on the plane of the cell centres
     std::unique_ptr<InterpolableField<Vec3>> velocity_;
     std::unique_ptr<InterpolableField<double>> k_, epsilon_, temperature_;
-    std::vector<Mat3> cellGradients_;      ///< cell scheme only
+    std::vector<Mat3> cellGradients_; ///< cell scheme only
+    /// A part of a decomposed case: the fields as read (U, then k, ε, T where present), until
+    /// shareProcessorPoints() has used their boundary values.
+    std::optional<FoamVolField<Vec3>> velocityRead_;
+    std::array<std::optional<FoamVolField<double>>, 3> scalarsRead_;
     std::unique_ptr<FoamLattice> lattice_; ///< lattice scheme only
     std::string latticeReport_;
     std::vector<std::pair<std::string, double>> latticeFigures_;

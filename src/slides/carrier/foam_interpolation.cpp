@@ -15,48 +15,57 @@ struct PointFit {
     bool rankDeficient = false; ///< the samples do not fix a linear function (e.g. coplanar)
 };
 
-/// Weighted least squares for φ(x) = φ̄ + g·(x − x̄) about the weighted mean x̄ of the samples
-/// (cell centres, or boundary face centres for s ≥ cellCount), w = 1/|x − x_p|²:
-/// g = C⁺ Σ w_k (x_k − x̄) φ_k with C = Σ w_k (x_k − x̄)(x_k − x̄)ᵀ, so the point value is
-/// Σ_k α_k φ_k with α_k = w_k/W + w_k (x_p − x̄)ᵀ C⁺ (x_k − x̄). Exact for linear φ when C has
-/// full rank; with samples in a plane (2-D, wedge) the pseudo-inverse fits within the plane.
 PointFit fitPoint(const FoamMesh& mesh, const Vec3& here, const std::vector<int>& samples) {
-    const auto centre = [&](int s) -> const Vec3& {
-        return s < mesh.cellCount ? mesh.cellCentres[s] : mesh.faceCentres[s - mesh.cellCount];
-    };
+    std::vector<Vec3> positions;
+    for (const int s : samples)
+        positions.push_back(s < mesh.cellCount ? mesh.cellCentres[s]
+                                               : mesh.faceCentres[s - mesh.cellCount]);
+    PointFit fit;
+    fit.weights = pointFitWeights(here, positions, fit.rankDeficient);
+    return fit;
+}
+
+} // namespace
+
+// Weighted least squares for φ(x) = φ̄ + g·(x − x̄) about the weighted mean x̄ of the samples,
+// w = 1/|x − x_p|²: g = C⁺ Σ w_k (x_k − x̄) φ_k with C = Σ w_k (x_k − x̄)(x_k − x̄)ᵀ, so the
+// point value is Σ_k α_k φ_k with α_k = w_k/W + w_k (x_p − x̄)ᵀ C⁺ (x_k − x̄). Exact for linear φ
+// when C has full rank; with samples in a plane (2-D, wedge) the pseudo-inverse fits within the
+// plane.
+std::vector<double> pointFitWeights(const Vec3& here, std::span<const Vec3> positions,
+                                    bool& rankDeficient) {
     double scale = 0;
-    for (const int s : samples) scale = std::max(scale, (centre(s) - here).norm());
+    for (const Vec3& x : positions) scale = std::max(scale, (x - here).norm());
     std::vector<Vec3> offsets; // scaled: the fit is well conditioned
     std::vector<double> weights;
     Vec3 mean = Vec3::Zero();
     double total = 0;
-    for (const int s : samples) {
-        offsets.push_back((centre(s) - here) / scale);
+    for (const Vec3& x : positions) {
+        offsets.push_back((x - here) / scale);
         weights.push_back(1 / std::max(offsets.back().squaredNorm(), 1e-24));
         mean += weights.back() * offsets.back();
         total += weights.back();
     }
     mean /= total;
     Mat3 spread = Mat3::Zero();
-    for (std::size_t k = 0; k < samples.size(); ++k)
+    for (std::size_t k = 0; k < positions.size(); ++k)
         spread += weights[k] * (offsets[k] - mean) * (offsets[k] - mean).transpose();
     const Eigen::SelfAdjointEigenSolver<Mat3> eigen(spread);
     const double largest = eigen.eigenvalues().maxCoeff();
     Vec3 inverse = Vec3::Zero();
-    PointFit fit;
+    rankDeficient = false;
     for (int i = 0; i < 3; ++i) {
         const double value = eigen.eigenvalues()[i];
         if (value > 1e-12 * largest) inverse[i] = 1 / value;
-        if (value < 1e-3 * largest) fit.rankDeficient = true; // or nearly: ill-conditioned
+        if (value < 1e-3 * largest) rankDeficient = true; // or nearly: ill-conditioned
     }
     const Vec3 toPoint = eigen.eigenvectors() * inverse.asDiagonal() *
                          eigen.eigenvectors().transpose() * (-mean); // C⁺ (x_p − x̄)
-    for (std::size_t k = 0; k < samples.size(); ++k)
-        fit.weights.push_back(weights[k] / total + weights[k] * toPoint.dot(offsets[k] - mean));
-    return fit;
+    std::vector<double> alphas;
+    for (std::size_t k = 0; k < positions.size(); ++k)
+        alphas.push_back(weights[k] / total + weights[k] * toPoint.dot(offsets[k] - mean));
+    return alphas;
 }
-
-} // namespace
 
 PointWeights::PointWeights(const FoamMesh& mesh) : mesh_(mesh) {
     const int pointCount = static_cast<int>(mesh.points.size());
@@ -124,6 +133,10 @@ template <typename T>
 InterpolableField<T>::InterpolableField(const FoamVolField<T>& field, const FoamMesh& mesh,
                                         const PointWeights& weights)
     : cells(field.cells), points(weights.pointValues(field)) {
+    refreshFaceMidpoints(mesh);
+}
+
+template <typename T> void InterpolableField<T>::refreshFaceMidpoints(const FoamMesh& mesh) {
     faceMidpoints.resize(mesh.faceCount());
     for (int f = 0; f < mesh.faceCount(); ++f) {
         T sum = T(0.0 * cells[0]);

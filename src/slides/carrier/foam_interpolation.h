@@ -20,6 +20,7 @@
 #include "slides/carrier/foam_locator.h"
 
 #include <array>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -56,6 +57,12 @@ private:
     std::vector<double> weights_;
 };
 
+/// Weights α_k of the inverse-distance-squared least-squares linear fit at point over samples
+/// at positions (the point value is Σ α_k φ_k, in this order); rankDeficient when the samples
+/// do not fix a linear function, or nearly.
+std::vector<double> pointFitWeights(const Vec3& point, std::span<const Vec3> positions,
+                                    bool& rankDeficient);
+
 /// One field ready to interpolate: cell values, point values, face point-average values.
 template <typename T> struct InterpolableField {
     std::vector<T> cells;
@@ -65,6 +72,8 @@ template <typename T> struct InterpolableField {
     InterpolableField(const FoamVolField<T>& field, const FoamMesh& mesh,
                       const PointWeights& weights);
 
+    /// Face point averages again, after point values changed (carrier/foam_shared_points.h).
+    void refreshFaceMidpoints(const FoamMesh& mesh);
     /// The cellPoint value at a located point.
     T value(const FoamMesh& mesh, const TetLocation& at) const;
 };

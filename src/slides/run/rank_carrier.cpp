@@ -39,6 +39,7 @@ std::size_t sampleWidth(CarrierNeeds needs) {
 RankCarrier::RankCarrier(const std::filesystem::path& caseDirectory,
                          const FoamCarrierSettings& settings, const RankCommunicator& ranks)
     : caseDirectory_(caseDirectory), ranks_(ranks) {
+    PartAddressing addressing;
     agreeOnFailure(ranks, [&] {
         requireDecompositionFits(caseDirectory, true, ranks.size());
         const auto dictionary = (caseDirectory / "constant" / "slidesProperties").string();
@@ -48,6 +49,8 @@ RankCarrier::RankCarrier(const std::filesystem::path& caseDirectory,
                              "cellPoint or cell");
         part_ = std::make_unique<FoamCarrier>(foamProcessorDirectory(caseDirectory, ranks.rank()),
                                               settings);
+        addressing =
+            readPartAddressing(foamProcessorDirectory(caseDirectory, ranks.rank()), part_->mesh());
         if (part_->wedge() || part_->planeNormal())
             throw InputError(caseDirectory.string(), 0, "",
                              "parallel runs support 3-D meshes only so far (this one is a wedge or "
@@ -64,6 +67,8 @@ RankCarrier::RankCarrier(const std::filesystem::path& caseDirectory,
             }
         }
     });
+    part_->shareProcessorPoints(
+        addressing, [&](std::span<const std::byte> bytes) { return ranks_.allGather(bytes); });
     std::array<double, 3> low{}, high{};
     const FoamMesh& mesh = part_->mesh();
     for (int axis = 0; axis < 3; ++axis) {
