@@ -50,6 +50,10 @@ ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
                          "parallel runs (-parallel) need a decomposed OpenFOAM case, carrier type "
                          "foamField, so far");
     if (foam && !ranks.parallel()) requireDecompositionFits(caseDirectory, false, 1);
+    if (ranks.parallel()) // no ghosts across ranks yet: `auto` leaves collisions off
+        for (AutomaticTerm& automatic : scene.physics.automaticTerms)
+            if (automatic.term == PhysicsTerm::collisions && automatic.unavailable.empty())
+                automatic.unavailable = "not supported in parallel runs yet";
     std::unique_ptr<const CarrierField> carrier =
         ranks.parallel()
             ? std::make_unique<RankCarrier>(caseDirectory,
