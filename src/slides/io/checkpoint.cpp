@@ -3,7 +3,6 @@
 #include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/hdf5_file.h"
-#include "slides/io/hdf5_particles.h"
 
 #include <algorithm>
 #include <charconv>
@@ -114,7 +113,7 @@ struct ArrivalColumns {
 };
 
 void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringColumns* springs,
-                const std::vector<FrameRecord>& frames, double nextFrameTime,
+                const std::vector<FrameRecord>& frames, double nextFrameTime, const RunTimes& times,
                 const RunFingerprint& fingerprint) {
     const Hdf5Handle checkpoint = file.createGroup(group);
     const hid_t g = checkpoint.get();
@@ -130,6 +129,8 @@ void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringC
     file.writeAttribute(g, "collisions", std::int64_t{counters.collisions});
     writeColumn(file, g, "rebounds", counters.rebounds);
     file.writeAttribute(g, "nextFrameTime", nextFrameTime);
+    file.writeAttribute(g, "wallSeconds", times.wallSeconds);
+    file.writeAttribute(g, "steppingSeconds", times.steppingSeconds);
     writeColumn(file, g, "escapedThrough", counters.escapedThrough);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
@@ -200,6 +201,7 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
     state.counters.collisions = file.readInt64(g, "collisions");
     state.counters.rebounds = file.readUInt64(g + "/rebounds");
     state.nextFrameTime = file.readDouble(g, "nextFrameTime");
+    state.times = {file.readDouble(g, "wallSeconds"), file.readDouble(g, "steppingSeconds")};
     state.counters.escapedThrough = file.readUInt64(g + "/escapedThrough");
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
@@ -249,48 +251,22 @@ RunFingerprint fingerprintOf(const fs::path& dictionaryFile, double dt) {
     return {SLIDES_VERSION, fnv1a(bytes), dt};
 }
 
-void writeCheckpoint(const fs::path& directory, const std::optional<fs::path>& hdf5,
-                     const RunSnapshot& snapshot, const SpringColumns* springs,
-                     const std::vector<FrameRecord>& frames, double nextFrameTime,
+void writeCheckpoint(const fs::path& directory, const RunSnapshot& snapshot,
+                     const SpringColumns* springs, const std::vector<FrameRecord>& frames,
+                     double nextFrameTime, const RunTimes& times,
                      const RunFingerprint& fingerprint) {
     writeFileAtomically(directory / checkpointFileName, [&](const fs::path& temporary) {
-        // hdf5 is flushed after its last frame: consistent on disk.
-        if (hdf5) {
-            std::error_code error;
-            fs::copy_file(*hdf5, temporary, fs::copy_options::overwrite_existing, error);
-            if (error)
-                throw OutputError("cannot copy " + hdf5->string() +
-                                  " into the checkpoint: " + error.message());
-        }
-        Hdf5File file(temporary, hdf5 ? Hdf5Access::readWrite : Hdf5Access::create);
-        file.checksumData();
-        writeState(file, snapshot, springs, frames, nextFrameTime, fingerprint);
+        Hdf5File file(temporary, Hdf5Access::createChecksummed);
+        writeState(file, snapshot, springs, frames, nextFrameTime, times, fingerprint);
         file.close();
     });
 }
 
-CheckpointState readCheckpoint(const fs::path& directory, bool restoreHdf5,
-                               const RunFingerprint& fingerprint) {
+CheckpointState readCheckpoint(const fs::path& directory, const RunFingerprint& fingerprint) {
     const fs::path path = directory / checkpointFileName;
     if (!fs::exists(path)) refuse(path, "no checkpoint here (write one with --checkpoint-every N)");
-    CheckpointState state;
-    {
-        const Hdf5File file(path, Hdf5Access::readOnly);
-        state = readState(file, fingerprint);
-    }
-    if (restoreHdf5) {
-        // The frames the checkpoint holds become the HDF5 file the run continues.
-        const fs::path partial = directory / (std::string(ParticlesHdf5::fileName) + ".partial");
-        std::error_code error;
-        fs::copy_file(path, partial, fs::copy_options::overwrite_existing, error);
-        if (error)
-            throw OutputError("cannot restore " + partial.string() + " from " + path.string() +
-                              ": " + error.message());
-        Hdf5File file(partial, Hdf5Access::readWrite);
-        file.remove(group);
-        file.close();
-    }
-    return state;
+    const Hdf5File file(path, Hdf5Access::readOnly);
+    return readState(file, fingerprint);
 }
 
 } // namespace slides

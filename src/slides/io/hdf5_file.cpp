@@ -62,8 +62,14 @@ bool Hdf5Handle::close() {
 Hdf5File::Hdf5File(std::filesystem::path path, Hdf5Access access)
     : path_(std::move(path)), access_(access) {
     startHdf5();
-    if (access == Hdf5Access::create) {
-        file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    if (access == Hdf5Access::create || access == Hdf5Access::createChecksummed) {
+        checksums_ = access == Hdf5Access::createChecksummed;
+        Hdf5Handle fileAccess(H5Pcreate(H5P_FILE_ACCESS));
+        if (!fileAccess.valid() ||
+            (checksums_ &&
+             H5Pset_libver_bounds(fileAccess.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST) < 0))
+            fail("cannot describe the file");
+        file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fileAccess.get()));
         if (!file_.valid()) fail("cannot create the file");
         return;
     }
