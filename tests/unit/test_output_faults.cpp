@@ -79,9 +79,9 @@ TEST(OutputFaults, FramesThatCannotBeFlushedAreWrittenAgainOnRestart) {
     EXPECT_EQ(WEXITSTATUS(status), 2);
     const std::string text = test::slurp(log);
     const std::string error = text.substr(text.rfind("\nslides-track: error: ") + 1);
-    EXPECT_TRUE(error.starts_with("slides-track: error: cannot write " +
-                                  (out / "particles.h5.partial").string()))
-        << error;
+    EXPECT_EQ(error, "slides-track: error: cannot write " +
+                         (out / "particles.h5.partial").string() +
+                         ": cannot flush to disk (File too large)\n");
     EXPECT_EQ(
         test::runCli(spray.path.string() + " --output " + out.string() + " --restart --threads 1",
                      spray.path / "restart.log"),
@@ -97,6 +97,35 @@ TEST(OutputFaults, FramesThatCannotBeFlushedAreWrittenAgainOnRestart) {
         char group[32];
         std::snprintf(group, sizeof group, "/frames/%06zu", n);
         EXPECT_NO_THROW(particles.readDoubles(std::string(group) + "/position", 3)) << group;
+    }
+}
+
+// A full disk, on tmpfs file systems of 100 kB to 800 kB (mounting needs root): wherever the
+// space ends (the carrier, a frame, the series, particles.h5.partial, a checkpoint), the message
+// names the file and the system's reason; copying the frames into the checkpoint said
+// `Input/output error`, and a failed flush of particles.h5.partial gave no reason.
+TEST(OutputFaults, FullDiskNamesTheFileAndNoSpace) {
+    const SmallSpray spray("");
+    const fs::path disk = spray.path / "disk";
+    fs::create_directories(disk);
+    for (const char* size : {"100k", "200k", "300k", "400k", "800k"}) {
+        const std::string mount = "mount -t tmpfs -o size=" + std::string(size) + " tmpfs " +
+                                  disk.string() + " 2> /dev/null";
+        if (std::system(mount.c_str()) != 0) GTEST_SKIP() << "cannot mount a tmpfs (not root)";
+        const fs::path log = spray.path / "log";
+        const int status =
+            test::runCli(spray.path.string() + " --output " + (disk / "out").string() +
+                             " --checkpoint-every 50 --threads 1 --quiet",
+                         log);
+        const std::string text = test::slurp(log);
+        EXPECT_EQ(status, 2) << size << ": " << text;
+        EXPECT_NE(text.find("slides-track: error: cannot write " + (disk / "out").string() + "/"),
+                  std::string::npos)
+            << size << ": " << text;
+        EXPECT_TRUE(text.ends_with("(No space left on device)\n") ||
+                    text.ends_with(": No space left on device\n"))
+            << size << ": " << text;
+        ASSERT_EQ(std::system(("umount " + disk.string()).c_str()), 0);
     }
 }
 

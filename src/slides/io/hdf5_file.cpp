@@ -25,6 +25,12 @@ void startHdf5() {
     (void)started;
 }
 
+/// " (the system's reason)" of a failed HDF5 write whose errno was cleared before it; empty
+/// when the system gave none.
+std::string systemReason() {
+    return errno ? std::string(" (") + std::strerror(errno) + ")" : std::string();
+}
+
 /// Rows per chunk: about 64 KiB of data, never more than the dataset.
 hsize_t chunkRows(std::size_t rows, std::size_t rowBytes) {
     const std::size_t target = std::max<std::size_t>(1, 65536 / rowBytes);
@@ -108,8 +114,9 @@ void Hdf5File::writeRaw(hid_t parent, const std::string& name, hid_t type, const
     Hdf5Handle dataset(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
                                   creation.get(), H5P_DEFAULT));
     if (!dataset.valid()) fail("cannot create dataset " + name);
+    errno = 0;
     if (rows > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-        fail("cannot write dataset " + name);
+        fail("cannot write dataset " + name + systemReason());
     writeAttribute(dataset.get(), "units", units);
 }
 
@@ -249,14 +256,13 @@ std::int64_t Hdf5File::readInt64(const std::string& object, const std::string& n
 }
 
 void Hdf5File::flush() const {
-    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush to disk");
+    errno = 0;
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush to disk" + systemReason());
 }
 
 void Hdf5File::close() {
     errno = 0;
-    if (!file_.close())
-        fail(std::string("cannot close the file") +
-             (errno ? std::string(" (") + std::strerror(errno) + ")" : ""));
+    if (!file_.close()) fail("cannot close the file" + systemReason());
 }
 
 } // namespace slides
