@@ -194,6 +194,12 @@ std::size_t Hdf5File::rowsOf(const std::string& path, std::size_t columns) const
     if (rank != (columns == 1 ? 1 : 2) ||
         H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 || dims[1] != columns)
         fail("dataset " + path + " does not have " + std::to_string(columns) + " column(s)");
+    // Deflate expands its input at most 1032-fold: more rows than that are a damaged
+    // description, refused before they are allocated.
+    const double stored = static_cast<double>(H5Dget_storage_size(dataset.get()));
+    if (static_cast<double>(dims[0]) * static_cast<double>(columns) * 8 > 1032 * stored + 65536)
+        fail("dataset " + path + " claims " + std::to_string(dims[0]) +
+             " rows, more than its storage holds (damaged)");
     return static_cast<std::size_t>(dims[0]);
 }
 
