@@ -5,6 +5,7 @@
 // ends in one message naming the file, and what was written before stays whole.
 #include "../support/case_runs.h"
 #include "slides/io/atomic_file.h"
+#include "slides/io/hdf5_file.h"
 
 #include <gtest/gtest.h>
 
@@ -17,24 +18,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The analytic spray with 500 particles and a small carrier lattice: its checkpoints grow
-/// from 250 kB to 480 kB, and the carrier file stays far below them.
+/// The analytic spray with 500 particles, a small carrier lattice and `output`: its checkpoints
+/// grow from 30 kB (step 50) to 41 kB, the carrier file is 5.5 kB, frames of ids alone stay
+/// below 17 kB, and particles.h5 grows past 300 kB.
 struct SmallSpray : test::ScratchDirectory {
-    SmallSpray() : test::ScratchDirectory("output-faults") {
+    explicit SmallSpray(const std::string& output = "hdf5 no; fields (id);")
+        : test::ScratchDirectory("output-faults") {
         std::ofstream(path / "constant" / "slidesProperties")
             << "#include \"" << (test::defaultCase / "constant" / "slidesProperties").string()
-            << "\"\nparticles { count 500; }\noutput { carrierResolution (8 8 8); }\n";
+            << "\"\nparticles { count 500; }\noutput { carrierResolution (8 8 8); " << output
+            << " }\n";
     }
 };
 
-// The checkpoint after the first ones cannot be closed (HDF5 flushes it on closing, past the
-// 350 KiB limit): the run printed its error and then died of SIGSEGV in HDF5's shutdown, which
+// The checkpoint after the first one cannot be closed (HDF5 flushes it on closing, past the
+// 33 KiB limit): the run printed its error and then died of SIGSEGV in HDF5's shutdown, which
 // closed the half-closed file a second time.
 TEST(OutputFaults, CheckpointThatCannotBeFlushedEndsInExitTwoKeepingThePreviousOne) {
     const SmallSpray spray;
     const fs::path out = spray.path / "out";
     const fs::path log = spray.path / "log";
-    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 350; exec " +
+    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 33; exec " +
                                 std::string(SLIDES_TRACK_EXE) + " " + spray.path.string() +
                                 " --output " + out.string() +
                                 " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
@@ -56,7 +60,73 @@ TEST(OutputFaults, CheckpointThatCannotBeFlushedEndsInExitTwoKeepingThePreviousO
                      spray.path / "restart.log"),
         0)
         << test::slurp(spray.path / "restart.log");
-    EXPECT_TRUE(fs::exists(out / "particles.h5"));
+    EXPECT_TRUE(fs::exists(out / "summary.json"));
+}
+
+// particles.h5.partial cannot be flushed past the 350 KiB limit: HDF5 may leave it unreadable
+// (its /frames group half written), so a restart writes the frames before the checkpoint anew
+// from their .vtp files, and ends with every frame in particles.h5.
+TEST(OutputFaults, FramesThatCannotBeFlushedAreWrittenAgainOnRestart) {
+    const SmallSpray spray("");
+    const fs::path out = spray.path / "out";
+    const fs::path log = spray.path / "log";
+    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 350; exec " +
+                                std::string(SLIDES_TRACK_EXE) + " " + spray.path.string() +
+                                " --output " + out.string() +
+                                " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    const std::string text = test::slurp(log);
+    const std::string error = text.substr(text.rfind("\nslides-track: error: ") + 1);
+    EXPECT_EQ(error, "slides-track: error: cannot write " +
+                         (out / "particles.h5.partial").string() +
+                         ": cannot flush to disk (File too large)\n");
+    EXPECT_EQ(
+        test::runCli(spray.path.string() + " --output " + out.string() + " --restart --threads 1",
+                     spray.path / "restart.log"),
+        0)
+        << test::slurp(spray.path / "restart.log");
+    std::size_t frames = 0;
+    for (const auto& entry : fs::directory_iterator(out))
+        frames += entry.path().extension() == ".vtp" &&
+                  entry.path().filename().string().starts_with("particles_");
+    const Hdf5File particles(out / "particles.h5", Hdf5Access::readOnly);
+    EXPECT_EQ(particles.readInt64("/", "frames"), static_cast<std::int64_t>(frames));
+    for (std::size_t n = 0; n < frames; ++n) {
+        char group[32];
+        std::snprintf(group, sizeof group, "/frames/%06zu", n);
+        EXPECT_NO_THROW(particles.readDoubles(std::string(group) + "/position", 3)) << group;
+    }
+}
+
+// A full disk, on tmpfs file systems of 100 kB to 800 kB (mounting needs root): wherever the
+// space ends (the carrier, a frame, the series, particles.h5.partial, a checkpoint), the message
+// names the file and the system's reason; copying the frames into the checkpoint said
+// `Input/output error`, and a failed flush of particles.h5.partial gave no reason.
+TEST(OutputFaults, FullDiskNamesTheFileAndNoSpace) {
+    const SmallSpray spray("");
+    const fs::path disk = spray.path / "disk";
+    fs::create_directories(disk);
+    for (const char* size : {"100k", "200k", "300k", "400k", "800k"}) {
+        const std::string mount = "mount -t tmpfs -o size=" + std::string(size) + " tmpfs " +
+                                  disk.string() + " 2> /dev/null";
+        if (std::system(mount.c_str()) != 0) GTEST_SKIP() << "cannot mount a tmpfs (not root)";
+        const fs::path log = spray.path / "log";
+        const int status =
+            test::runCli(spray.path.string() + " --output " + (disk / "out").string() +
+                             " --checkpoint-every 50 --threads 1 --quiet",
+                         log);
+        const std::string text = test::slurp(log);
+        EXPECT_EQ(status, 2) << size << ": " << text;
+        EXPECT_NE(text.find("slides-track: error: cannot write " + (disk / "out").string() + "/"),
+                  std::string::npos)
+            << size << ": " << text;
+        EXPECT_TRUE(text.ends_with("(No space left on device)\n") ||
+                    text.ends_with(": No space left on device\n"))
+            << size << ": " << text;
+        ASSERT_EQ(std::system(("umount " + disk.string()).c_str()), 0);
+    }
 }
 
 // The temporary's name (target + ".tmp-PID") is longer than a file name may be: even root cannot

@@ -1,4 +1,4 @@
-// ctest-labels: foundation config run
+// ctest-labels: foundation config run robustness
 // The resolve step (run/resolved_scene.h) on the default spray case: the command line's
 // overrides land in the resolved scene, the scene analysis's time step is taken where none is
 // given (and a given one is kept), and a bad override is one InputError naming its option.
@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <regex>
 #include <string>
@@ -52,20 +53,34 @@ TEST(ResolvedScene, WithoutDtTheAnalysisTimeStepIsTaken) {
     EXPECT_EQ(resolved.scene.time.dt, resolved.analysis.suggestedTimeStep);
 }
 
-TEST(ResolvedScene, BadOverridesAreInputErrorsNamingTheOption) {
-    const auto keyOf = [](const SceneOverrides& overrides) {
+// A refused --dt or --end-time names the key it overrides, at its line of the dictionary
+// (time.dt on line 84 of the default case, time.endTime on 85), and the option's value.
+TEST(ResolvedScene, BadOverridesAreInputErrorsNamingTheKeyTheyOverride) {
+    const auto errorOf = [](const SceneOverrides& overrides) {
         try {
             resolveScene(test::defaultCase, overrides);
         } catch (const InputError& error) {
-            return error.key();
+            return std::string(error.what());
         }
         return std::string("no error");
     };
-    EXPECT_EQ(keyOf(overrides(-1.0, std::nullopt)), "--end-time");
-    EXPECT_EQ(keyOf(overrides(std::nullopt, 0.0)), "--dt");
-    EXPECT_EQ(keyOf(overrides(1e-3, 2e-3)), "--dt"); // longer than the run
-    EXPECT_EQ(keyOf(overrides(std::nullopt, std::nullopt, "latestTime")),
-              "--time"); // an analytic carrier
+    const std::string dictionary = (test::defaultCase / "constant/slidesProperties").string();
+    EXPECT_EQ(errorOf(overrides(-1.0, std::nullopt)),
+              dictionary + ":85: key 'time.endTime': --end-time -1 on the command line must be "
+                           "positive");
+    EXPECT_EQ(errorOf(overrides(std::nullopt, 0.0)),
+              dictionary + ":84: key 'time.dt': --dt 0 on the command line must be positive");
+    EXPECT_EQ(errorOf(overrides(std::nullopt, -std::numeric_limits<double>::quiet_NaN())),
+              dictionary + ":84: key 'time.dt': --dt -nan on the command line must be positive");
+    EXPECT_EQ(errorOf(overrides(1e-3, 2e-3)),
+              dictionary + ":84: key 'time.dt': --dt 0.002 on the command line is longer than "
+                           "time.endTime 0.001 s");
+    EXPECT_EQ(errorOf(overrides(1e-6, std::nullopt)),
+              dictionary + ":85: key 'time.endTime': --end-time 1e-06 on the command line is "
+                           "shorter than time.dt 1e-05 s");
+    EXPECT_EQ(errorOf(overrides(std::nullopt, std::nullopt, "latestTime")),
+              "command line: key '--time': only an OpenFOAM carrier (foamField) has time "
+              "directories"); // an analytic carrier
 }
 
 } // namespace

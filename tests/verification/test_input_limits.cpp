@@ -37,6 +37,15 @@ const test::BrokenCase limitCases[] = {
      "    drag        haiderLevenspiel;\n    history { model basset; accuracy 1e-300; }", 1,
      "key 'physics.history.accuracy': must be at least 1e-10"},
     // endTime 0.1 s over the interval and the step.
+    {"radiusSpreadPastAnyParticle", "        type    fixed;\n        value   80e-6;",
+     "        type    normal;\n        mean    80e-6;\n        standardDeviation 1e308;", 2,
+     "key 'particles.radiusDistribution.standardDeviation': must be at most 1"},
+    {"radiusMinimumPastAnyParticle", "        value   80e-6;",
+     "        value   80e-6;\n        minimum 1e308;", 1,
+     "key 'particles.radiusDistribution.minimum': must be at most 1"},
+    {"radiusMaximumPastAnyParticle", "        value   80e-6;",
+     "        value   80e-6;\n        maximum 1e308;", 1,
+     "key 'particles.radiusDistribution.maximum': must be at most 1"},
     {"framesPastTheLimit", "    interval            5e-4;", "    interval            1e-300;", 0,
      "key 'output.interval': gives 1e+299 frames to time.endTime 0.1 s, more than the 1e+06 a "
      "run may write"},

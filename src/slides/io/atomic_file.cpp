@@ -1,12 +1,14 @@
 #include "slides/io/atomic_file.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <system_error>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 namespace slides {
@@ -60,6 +62,23 @@ void writeTextAtomically(const std::filesystem::path& target, std::string_view t
         if (std::fclose(file) != 0 || !written)
             fail(target, std::strerror(written ? errno : writeErrno));
     });
+}
+
+void removeStaleTemporaries(const std::filesystem::path& directory) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+        const std::string name = entry.path().filename().string();
+        const auto marker = name.rfind(".tmp-");
+        if (marker == std::string::npos) continue;
+        const char* digits = name.data() + marker + 5;
+        const char* end = name.data() + name.size();
+        pid_t pid = 0;
+        const auto parsed = std::from_chars(digits, end, pid);
+        if (parsed.ec != std::errc() || parsed.ptr != end || pid <= 0) continue;
+        // kill(pid, 0) fails with ESRCH exactly when no process has that id.
+        if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH)
+            std::filesystem::remove(entry.path(), error);
+    }
 }
 
 } // namespace slides

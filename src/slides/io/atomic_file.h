@@ -25,4 +25,8 @@ void writeFileAtomically(const std::filesystem::path& target,
 
 void writeTextAtomically(const std::filesystem::path& target, std::string_view text);
 
+/// Removes the temporaries `<name>.tmp-<pid>` in directory whose process is no longer running
+/// (a run killed while writing); those of running processes stay.
+void removeStaleTemporaries(const std::filesystem::path& directory);
+
 } // namespace slides

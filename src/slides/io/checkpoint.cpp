@@ -3,10 +3,10 @@
 #include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/hdf5_file.h"
-#include "slides/io/hdf5_particles.h"
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -114,7 +114,7 @@ struct ArrivalColumns {
 };
 
 void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringColumns* springs,
-                const std::vector<FrameRecord>& frames, double nextFrameTime,
+                const std::vector<FrameRecord>& frames, double nextFrameTime, const RunTimes& times,
                 const RunFingerprint& fingerprint) {
     const Hdf5Handle checkpoint = file.createGroup(group);
     const hid_t g = checkpoint.get();
@@ -130,6 +130,8 @@ void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringC
     file.writeAttribute(g, "collisions", std::int64_t{counters.collisions});
     writeColumn(file, g, "rebounds", counters.rebounds);
     file.writeAttribute(g, "nextFrameTime", nextFrameTime);
+    file.writeAttribute(g, "wallSeconds", times.wallSeconds);
+    file.writeAttribute(g, "steppingSeconds", times.steppingSeconds);
     writeColumn(file, g, "escapedThrough", counters.escapedThrough);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
@@ -175,6 +177,19 @@ void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringC
     throw InputError(file.string(), 0, "", why + "; cannot restart from it");
 }
 
+bool finite(double value) { return std::isfinite(value); }
+bool finite(const Vec3& value) { return value.allFinite(); }
+template <typename Value> bool finite(const std::vector<Value>& values) {
+    return std::all_of(values.begin(), values.end(), [](const Value& v) { return finite(v); });
+}
+
+/// Refuses a state value that no run can hold (a NaN or infinity where the run needs a number),
+/// so that it never enters a run.
+template <typename Value>
+void requireFinite(const Hdf5File& file, const std::string& what, const Value& value) {
+    if (!finite(value)) refuse(file.path(), "damaged: non-finite value in " + what);
+}
+
 CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) {
     const std::string g = group;
     if (!file.exists(g)) refuse(file.path(), "not a checkpoint (no " + g + " group)");
@@ -187,6 +202,7 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
                                 ", constant/slidesProperties now hashes to " +
                                 hex(expected.dictionaryHash) + ")");
     const double dt = file.readDouble(g, "dt");
+    requireFinite(file, g + " dt", dt);
     if (dt != expected.dt)
         refuse(file.path(), "written with dt = " + shortest(dt) +
                                 " s, this run has dt = " + shortest(expected.dt) + " s");
@@ -200,6 +216,13 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
     state.counters.collisions = file.readInt64(g, "collisions");
     state.counters.rebounds = file.readUInt64(g + "/rebounds");
     state.nextFrameTime = file.readDouble(g, "nextFrameTime");
+    state.times = {file.readDouble(g, "wallSeconds"), file.readDouble(g, "steppingSeconds")};
+    for (const double value : {state.counters.time, state.nextFrameTime, state.times.wallSeconds,
+                               state.times.steppingSeconds})
+        requireFinite(file, g + " times", value);
+    if (state.counters.steps < 0 || state.counters.injected < 0 || state.counters.escaped < 0 ||
+        state.counters.collisions < 0)
+        refuse(file.path(), "damaged: negative counter in " + g);
     state.counters.escapedThrough = file.readUInt64(g + "/escapedThrough");
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
@@ -210,6 +233,11 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
                                     std::to_string(array.size()) + " entries, not " +
                                     std::to_string(count));
     });
+    requireFinite(file, g + "/cloud/position", state.cloud.position);
+    requireFinite(file, g + "/cloud/velocity", state.cloud.velocity);
+    requireFinite(file, g + "/cloud/radius", state.cloud.radius);
+    requireFinite(file, g + "/cloud/temperature", state.cloud.temperature);
+    requireFinite(file, g + "/cloud/angularVelocity", state.cloud.angularVelocity);
     state.cloud.stateWidth = static_cast<std::size_t>(file.readInt64(g + "/cloud", "stateWidth"));
     state.cloud.modelState =
         file.readDoubles(g + "/cloud/modelState", std::max<std::size_t>(state.cloud.stateWidth, 1));
@@ -218,12 +246,16 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
     ArrivalColumns arrivals;
     ArrivalColumns::forEach(arrivals, [&](const char* name, auto& array) {
         readColumn(file, g + "/arrivals/" + name, array);
+        if (array.size() != arrivals.id.size())
+            refuse(file.path(), std::string("damaged: arrival column ") + name + " has " +
+                                    std::to_string(array.size()) + " entries, not " +
+                                    std::to_string(arrivals.id.size()));
+        requireFinite(file, g + "/arrivals/" + name, array);
     });
     for (std::size_t i = 0; i < arrivals.id.size(); ++i)
-        state.arrivals.push_back({arrivals.id[i], arrivals.surface.at(i), arrivals.time.at(i),
-                                  arrivals.position.at(i), arrivals.velocity.at(i),
-                                  arrivals.radius.at(i), arrivals.temperature.at(i),
-                                  arrivals.angularVelocity.at(i)});
+        state.arrivals.push_back({arrivals.id[i], arrivals.surface[i], arrivals.time[i],
+                                  arrivals.position[i], arrivals.velocity[i], arrivals.radius[i],
+                                  arrivals.temperature[i], arrivals.angularVelocity[i]});
     if (file.exists(g + "/springs")) {
         SpringColumns& springs = state.springs;
         SpringColumns::forEach(springs, [&](const char* name, auto& array) {
@@ -249,48 +281,22 @@ RunFingerprint fingerprintOf(const fs::path& dictionaryFile, double dt) {
     return {SLIDES_VERSION, fnv1a(bytes), dt};
 }
 
-void writeCheckpoint(const fs::path& directory, const std::optional<fs::path>& hdf5,
-                     const RunSnapshot& snapshot, const SpringColumns* springs,
-                     const std::vector<FrameRecord>& frames, double nextFrameTime,
+void writeCheckpoint(const fs::path& directory, const RunSnapshot& snapshot,
+                     const SpringColumns* springs, const std::vector<FrameRecord>& frames,
+                     double nextFrameTime, const RunTimes& times,
                      const RunFingerprint& fingerprint) {
     writeFileAtomically(directory / checkpointFileName, [&](const fs::path& temporary) {
-        // hdf5 is flushed after its last frame: consistent on disk.
-        if (hdf5) {
-            std::error_code error;
-            fs::copy_file(*hdf5, temporary, fs::copy_options::overwrite_existing, error);
-            if (error)
-                throw OutputError("cannot copy " + hdf5->string() +
-                                  " into the checkpoint: " + error.message());
-        }
-        Hdf5File file(temporary, hdf5 ? Hdf5Access::readWrite : Hdf5Access::create);
-        file.checksumData();
-        writeState(file, snapshot, springs, frames, nextFrameTime, fingerprint);
+        Hdf5File file(temporary, Hdf5Access::createChecksummed);
+        writeState(file, snapshot, springs, frames, nextFrameTime, times, fingerprint);
         file.close();
     });
 }
 
-CheckpointState readCheckpoint(const fs::path& directory, bool restoreHdf5,
-                               const RunFingerprint& fingerprint) {
+CheckpointState readCheckpoint(const fs::path& directory, const RunFingerprint& fingerprint) {
     const fs::path path = directory / checkpointFileName;
     if (!fs::exists(path)) refuse(path, "no checkpoint here (write one with --checkpoint-every N)");
-    CheckpointState state;
-    {
-        const Hdf5File file(path, Hdf5Access::readOnly);
-        state = readState(file, fingerprint);
-    }
-    if (restoreHdf5) {
-        // The frames the checkpoint holds become the HDF5 file the run continues.
-        const fs::path partial = directory / (std::string(ParticlesHdf5::fileName) + ".partial");
-        std::error_code error;
-        fs::copy_file(path, partial, fs::copy_options::overwrite_existing, error);
-        if (error)
-            throw OutputError("cannot restore " + partial.string() + " from " + path.string() +
-                              ": " + error.message());
-        Hdf5File file(partial, Hdf5Access::readWrite);
-        file.remove(group);
-        file.close();
-    }
-    return state;
+    const Hdf5File file(path, Hdf5Access::readOnly);
+    return readState(file, fingerprint);
 }
 
 } // namespace slides

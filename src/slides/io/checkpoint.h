@@ -4,13 +4,16 @@
 //     slides-track CASE --checkpoint-every 500     // steps; writes CASE/slides/checkpoint.h5
 //     slides-track CASE --restart                  // continues from it
 //
-// checkpoint.h5 is a copy of the run's particles.h5.partial (its frames so far, when HDF5
-// output is on) plus a /checkpoint group: every per-particle array of the cloud
-// (ParticleCloud::forEachArray), the arrivals, the run's counters, the frames written and
-// the next frame time; attributes name the software version, the hash of the case dictionary
-// and the time step it belongs to. It is written under a temporary name, flushed and renamed
-// (io/atomic_file.h), so a run killed at any moment leaves the previous checkpoint whole; its
-// datasets carry Fletcher-32 checksums, so a damaged file is refused rather than resumed.
+// checkpoint.h5 holds what a restart cannot rebuild from the output already flushed, in a
+// /checkpoint group: every per-particle array of the cloud (ParticleCloud::forEachArray), the
+// arrivals, the run's counters and times, the time and size of each frame written and the next
+// frame time; attributes name the software version, the hash of the case dictionary and the
+// time step it belongs to. Its size does not grow with the frames: a restart keeps the .vtp
+// frames before it and writes particles.h5.partial anew from them (io/run_output.h). It is written
+// under a temporary name, flushed and renamed (io/atomic_file.h), so a run killed at any moment
+// leaves the previous checkpoint whole. It is written in HDF5's latest format, whose metadata
+// (attributes included) carry checksums, and its datasets carry Fletcher-32 checksums: a damaged
+// file is refused rather than resumed.
 #pragma once
 
 #include "slides/io/frame_record.h"
@@ -49,6 +52,12 @@ struct SpringColumns {
     }
 };
 
+/// The run's time so far, every segment before a restart included [s].
+struct RunTimes {
+    double wallSeconds = 0;     ///< output included
+    double steppingSeconds = 0; ///< inside Stepper::step() only
+};
+
 /// Everything needed to continue a run.
 struct CheckpointState {
     RunCounters counters;
@@ -57,21 +66,20 @@ struct CheckpointState {
     SpringColumns springs; ///< of soft-sphere contacts touching
     std::vector<FrameRecord> frames;
     double nextFrameTime = 0; ///< [s]
+    RunTimes times;
 };
 
-/// Writes directory/checkpoint.h5 atomically, as a copy of hdf5File (the run's
-/// particles.h5.partial, when HDF5 output is on) plus the state; springs only with soft-sphere
-/// contacts. Throws OutputError.
-void writeCheckpoint(const std::filesystem::path& directory,
-                     const std::optional<std::filesystem::path>& hdf5File,
-                     const RunSnapshot& snapshot, const SpringColumns* springs,
-                     const std::vector<FrameRecord>& frames, double nextFrameTime,
+/// Writes directory/checkpoint.h5 atomically; springs only with soft-sphere contacts. Throws
+/// OutputError.
+void writeCheckpoint(const std::filesystem::path& directory, const RunSnapshot& snapshot,
+                     const SpringColumns* springs, const std::vector<FrameRecord>& frames,
+                     double nextFrameTime, const RunTimes& times,
                      const RunFingerprint& fingerprint);
 
-/// Reads directory/checkpoint.h5 and, with restoreHdf5 (HDF5 output on), restores
-/// particles.h5.partial from it. Throws InputError naming the checkpoint when it is missing,
-/// damaged, or written by another version, for another case dictionary or another time step.
-CheckpointState readCheckpoint(const std::filesystem::path& directory, bool restoreHdf5,
+/// Reads directory/checkpoint.h5. Throws InputError naming it (and the dataset) when it is
+/// missing, damaged, or written by another version, for another case dictionary or another
+/// time step.
+CheckpointState readCheckpoint(const std::filesystem::path& directory,
                                const RunFingerprint& fingerprint);
 
 } // namespace slides

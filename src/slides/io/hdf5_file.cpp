@@ -25,6 +25,12 @@ void startHdf5() {
     (void)started;
 }
 
+/// " (the system's reason)" of a failed HDF5 write whose errno was cleared before it; empty
+/// when the system gave none.
+std::string systemReason() {
+    return errno ? std::string(" (") + std::strerror(errno) + ")" : std::string();
+}
+
 /// Rows per chunk: about 64 KiB of data, never more than the dataset.
 hsize_t chunkRows(std::size_t rows, std::size_t rowBytes) {
     const std::size_t target = std::max<std::size_t>(1, 65536 / rowBytes);
@@ -62,8 +68,14 @@ bool Hdf5Handle::close() {
 Hdf5File::Hdf5File(std::filesystem::path path, Hdf5Access access)
     : path_(std::move(path)), access_(access) {
     startHdf5();
-    if (access == Hdf5Access::create) {
-        file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+    if (access == Hdf5Access::create || access == Hdf5Access::createChecksummed) {
+        checksums_ = access == Hdf5Access::createChecksummed;
+        Hdf5Handle fileAccess(H5Pcreate(H5P_FILE_ACCESS));
+        if (!fileAccess.valid() ||
+            (checksums_ &&
+             H5Pset_libver_bounds(fileAccess.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST) < 0))
+            fail("cannot describe the file");
+        file_ = Hdf5Handle(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fileAccess.get()));
         if (!file_.valid()) fail("cannot create the file");
         return;
     }
@@ -102,8 +114,9 @@ void Hdf5File::writeRaw(hid_t parent, const std::string& name, hid_t type, const
     Hdf5Handle dataset(H5Dcreate2(parent, name.c_str(), type, space.get(), H5P_DEFAULT,
                                   creation.get(), H5P_DEFAULT));
     if (!dataset.valid()) fail("cannot create dataset " + name);
+    errno = 0;
     if (rows > 0 && H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-        fail("cannot write dataset " + name);
+        fail("cannot write dataset " + name + systemReason());
     writeAttribute(dataset.get(), "units", units);
 }
 
@@ -181,6 +194,12 @@ std::size_t Hdf5File::rowsOf(const std::string& path, std::size_t columns) const
     if (rank != (columns == 1 ? 1 : 2) ||
         H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) < 0 || dims[1] != columns)
         fail("dataset " + path + " does not have " + std::to_string(columns) + " column(s)");
+    // Deflate expands its input at most 1032-fold: more rows than that are a damaged
+    // description, refused before they are allocated.
+    const double stored = static_cast<double>(H5Dget_storage_size(dataset.get()));
+    if (static_cast<double>(dims[0]) * static_cast<double>(columns) * 8 > 1032 * stored + 65536)
+        fail("dataset " + path + " claims " + std::to_string(dims[0]) +
+             " rows, more than its storage holds (damaged)");
     return static_cast<std::size_t>(dims[0]);
 }
 
@@ -243,14 +262,13 @@ std::int64_t Hdf5File::readInt64(const std::string& object, const std::string& n
 }
 
 void Hdf5File::flush() const {
-    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush to disk");
+    errno = 0;
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush to disk" + systemReason());
 }
 
 void Hdf5File::close() {
     errno = 0;
-    if (!file_.close())
-        fail(std::string("cannot close the file") +
-             (errno ? std::string(" (") + std::strerror(errno) + ")" : ""));
+    if (!file_.close()) fail("cannot close the file" + systemReason());
 }
 
 } // namespace slides

@@ -42,16 +42,20 @@ private:
     hid_t id_ = H5I_INVALID_HID;
 };
 
-enum class Hdf5Access { create, readOnly, readWrite };
+enum class Hdf5Access {
+    create,
+    /// Created in HDF5's latest format, whose metadata (object headers with their attributes,
+    /// B-trees, heaps) carry checksums, every chunked dataset a Fletcher-32 checksum.
+    createChecksummed,
+    readOnly,
+    readWrite
+};
 
 /// One HDF5 file: create it and add groups, datasets and attributes, or read them back.
 class Hdf5File {
 public:
     /// Creates (truncates) the file, or opens an existing one; throws if it cannot.
     explicit Hdf5File(std::filesystem::path path, Hdf5Access access = Hdf5Access::create);
-
-    /// Datasets written from now on carry a Fletcher-32 checksum.
-    void checksumData() { checksums_ = true; }
 
     /// Creates the group at path (parents must exist), e.g. "/frames/000003".
     Hdf5Handle createGroup(const std::string& path) const;

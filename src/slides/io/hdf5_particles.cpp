@@ -32,16 +32,6 @@ ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::
     file_->createGroup("/frames");
 }
 
-ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory,
-                             std::span<const FrameRecord> written, ParticleFieldSet fields)
-    : directory_(directory) {
-    file_.emplace(partialPath(directory), Hdf5Access::readWrite);
-    for (const auto& frame : written)
-        frames_.push_back({frameGroup(frames_.size()), frame.time, frame.count, fields});
-}
-
-std::filesystem::path ParticlesHdf5::partialFile() const { return partialPath(directory_); }
-
 void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     if (!frame.consistent()) throw std::invalid_argument("particle frame arrays differ in length");
     const std::size_t count = frame.id.size();

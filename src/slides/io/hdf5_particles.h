@@ -41,17 +41,10 @@ class ParticlesHdf5 {
 public:
     /// Starts directory/particles.h5.partial; caseName is stored as an attribute.
     ParticlesHdf5(const std::filesystem::path& directory, const std::string& caseName);
-    /// Continues the particles.h5.partial that a checkpoint restored (io/checkpoint.h), whose
-    /// frames are `written`, each with the arrays of `fields`.
-    ParticlesHdf5(const std::filesystem::path& directory, std::span<const FrameRecord> written,
-                  ParticleFieldSet fields);
 
     void writeFrame(double time, const ParticleFrame& frame);
     /// Writes /arrivals, closes the file, renames it to particles.h5, writes particles.xmf.
     void finish(std::span<const Arrival> arrivals);
-
-    /// The file being written (flushed after every frame).
-    std::filesystem::path partialFile() const;
 
     static constexpr const char* fileName = "particles.h5";
     static constexpr const char* indexName = "particles.xmf";

@@ -1,5 +1,6 @@
 #include "slides/io/run_output.h"
 
+#include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
 #include "slides/io/vtk_carrier_grid.h"
@@ -22,13 +23,15 @@ std::string frameFileName(std::size_t index) {
 
 /// Creates directory and removes what an earlier run left there: its particle files and
 /// checkpoint; on a restart only the frames after the `kept` ones and the finished HDF5 files
-/// (the checkpoint restored particles.h5.partial).
+/// (the restart kept particles.h5.partial's first frames); and the temporaries of runs killed
+/// while writing.
 std::filesystem::path prepared(std::filesystem::path directory, std::optional<std::size_t> kept) {
     std::error_code error;
     std::filesystem::create_directories(directory, error);
     if (error)
         throw OutputError("cannot create output directory " + directory.string() + ": " +
                           error.message());
+    removeStaleTemporaries(directory);
     const std::string partial = std::string(ParticlesHdf5::fileName) + ".partial";
     for (const auto& entry : std::filesystem::directory_iterator(directory)) {
         const std::string name = entry.path().filename().string();
@@ -62,20 +65,26 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
         for (std::size_t n = 0; n < frames_.size(); ++n)
             series.emplace_back(frames_[n].time, frameFileName(n));
         series_.resume(series);
-        if (settings.output.hdf5)
-            hdf5_.emplace(directory_, frames_, presentFields(fields_, heating_, spinning_));
-    } else if (settings.output.hdf5) {
+    }
+    if (settings.output.hdf5) {
         hdf5_.emplace(directory_, std::filesystem::absolute(settings.caseDirectory).string());
+        // A restart writes its kept frames again, read back from their .vtp files (written
+        // whole, under a temporary name): a run killed inside an HDF5 write may leave
+        // particles.h5.partial unreadable, and the checkpoint holds no frames.
+        for (std::size_t n = 0; n < frames_.size(); ++n) {
+            const StoredParticleFrame stored = readParticlesVtp(directory_ / frameFileName(n));
+            if (stored.id.size() != frames_[n].count)
+                throw InputError((directory_ / frameFileName(n)).string(), 0, "",
+                                 "holds " + std::to_string(stored.id.size()) +
+                                     " particles, the checkpoint counts " +
+                                     std::to_string(frames_[n].count) + "; cannot restart");
+            hdf5_->writeFrame(frames_[n].time, stored.view(fields_, heating_, spinning_));
+        }
     }
 }
 
 void RunOutput::writeCarrier(const CarrierField& carrier, const Box& domain) const {
     writeCarrierVti(directory_ / "carrier.vti", carrier, domain, carrierResolution_, 0.0);
-}
-
-std::optional<std::filesystem::path> RunOutput::hdf5File() const {
-    if (!hdf5_) return std::nullopt;
-    return hdf5_->partialFile();
 }
 
 void RunOutput::writeFrame(const RunSnapshot& snapshot) {

@@ -39,7 +39,8 @@ public:
     /// Creates the directory, removes the particle files, deposit and checkpoint of an earlier
     /// run there. With `resumed` (a restart, io/checkpoint.h), continues after those frames
     /// instead: the later frames of the interrupted run are removed, the series rewritten with
-    /// the earlier ones, and particles.h5.partial continued.
+    /// the earlier ones, and particles.h5.partial written anew with them (read back from their
+    /// .vtp files; InputError naming a frame file that cannot be read).
     RunOutput(std::filesystem::path directory, const RunOutputSettings& settings,
               const std::vector<FrameRecord>* resumed = nullptr);
 
@@ -53,8 +54,6 @@ public:
 
     const std::filesystem::path& directory() const { return directory_; }
     const std::vector<FrameRecord>& frames() const { return frames_; }
-    /// The HDF5 file being written, when output.hdf5 is on (a checkpoint copies it).
-    std::optional<std::filesystem::path> hdf5File() const;
 
 private:
     std::filesystem::path directory_;

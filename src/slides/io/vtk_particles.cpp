@@ -1,16 +1,21 @@
 #include "slides/io/vtk_particles.h"
 
+#include "slides/core/error.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/io/vtk_writing.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <stdexcept>
@@ -76,6 +81,80 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(polyData);
     writeVtkAtomically(file, writer);
+}
+
+ParticleFrame StoredParticleFrame::view(ParticleFieldSet fields, bool heating,
+                                        bool spinning) const {
+    ParticleFrame frame{id, position, velocity, radius, state, fields};
+    if (heating) frame.temperature = temperature;
+    if (spinning) frame.angularVelocity = angularVelocity;
+    return frame;
+}
+
+namespace {
+
+/// Values of the named point array with `components` components, or `fallback` per particle
+/// when the file does not hold it.
+template <typename Value>
+std::vector<Value> pointArray(vtkPointData* data, const char* name, int components,
+                              std::size_t count, const Value& fallback,
+                              const std::filesystem::path& file) {
+    std::vector<Value> values(count, fallback);
+    vtkDataArray* array = data->GetArray(name);
+    if (!array) return values;
+    if (array->GetNumberOfComponents() != components ||
+        static_cast<std::size_t>(array->GetNumberOfTuples()) != count)
+        throw InputError(file.string(), 0, "",
+                         std::string("damaged frame: array ") + name + " does not fit its points");
+    for (std::size_t i = 0; i < count; ++i) {
+        const double* tuple = array->GetTuple(static_cast<vtkIdType>(i));
+        if constexpr (std::is_same_v<Value, Vec3>)
+            values[i] = Vec3(tuple[0], tuple[1], tuple[2]);
+        else
+            values[i] = static_cast<Value>(tuple[0]);
+    }
+    return values;
+}
+
+} // namespace
+
+StoredParticleFrame readParticlesVtp(const std::filesystem::path& file) {
+    if (!std::filesystem::is_regular_file(file))
+        throw InputError(file.string(), 0, "", "missing frame file");
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(file.c_str());
+    // VTK reports a damaged file as error events: one InputError below instead of its report.
+    bool failed = false;
+    vtkNew<vtkCallbackCommand> onError;
+    onError->SetClientData(&failed);
+    onError->SetCallback(
+        [](vtkObject*, unsigned long, void* flag, void*) { *static_cast<bool*>(flag) = true; });
+    reader->AddObserver(vtkCommand::ErrorEvent, onError);
+    const auto verbosity = vtkLogger::GetCurrentVerbosityCutoff(); // its decompressor's too
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    reader->Update();
+    vtkLogger::SetStderrVerbosity(verbosity);
+    vtkPolyData* polyData = reader->GetOutput();
+    if (failed || !polyData || reader->GetErrorCode() != 0)
+        throw InputError(file.string(), 0, "", "damaged frame: VTK cannot read it");
+    const auto count = static_cast<std::size_t>(polyData->GetNumberOfPoints());
+    vtkPointData* data = polyData->GetPointData();
+    StoredParticleFrame frame;
+    frame.position.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+        polyData->GetPoint(static_cast<vtkIdType>(i), frame.position[i].data());
+    // Ids below 2⁵³ pass through the double of GetTuple exactly.
+    frame.id = pointArray<std::uint64_t>(data, "id", 1, count, 0, file);
+    const auto speed = pointArray<double>(data, "speed", 1, count, 0.0, file);
+    frame.velocity = pointArray<Vec3>(data, "velocity", 3, count, Vec3::Zero(), file);
+    if (!data->GetArray("velocity"))
+        for (std::size_t i = 0; i < count; ++i) frame.velocity[i] = Vec3(speed[i], 0, 0);
+    frame.radius = pointArray<double>(data, "diameter", 1, count, 0.0, file);
+    for (double& radius : frame.radius) radius /= 2; // exact: particleDiameter doubles it back
+    frame.state = pointArray<std::int32_t>(data, "state", 1, count, 0, file);
+    frame.temperature = pointArray<double>(data, "temperature", 1, count, 0.0, file);
+    frame.angularVelocity = pointArray<Vec3>(data, "angularVelocity", 3, count, Vec3::Zero(), file);
+    return frame;
 }
 
 } // namespace slides

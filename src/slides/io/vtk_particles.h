@@ -6,6 +6,8 @@
 // 1 arrived, 2 escaped), temperature [K] (only when the frame has temperatures: heat transfer
 // on); speed is the active scalar when written.
 // Binary, zlib-compressed, appended. A frame without particles is a valid empty dataset.
+// readParticlesVtp reads a frame back, value for value (a restart rebuilds the HDF5 frames
+// before its checkpoint from them, io/checkpoint.h).
 #pragma once
 
 #include "slides/core/vector.h"
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace slides {
 
@@ -41,5 +44,25 @@ struct ParticleFrame {
 /// Writes the frame atomically (io/atomic_file.h); throws OutputError on failure and
 /// std::invalid_argument if the spans differ in length.
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame);
+
+/// A frame read back from its .vtp file, owning one entry per particle in every array. An array
+/// the file does not hold (not in output.fields) is filled so that the frame writes the same
+/// values again: velocity (speed, 0, 0) where only the speed was written (√(s²) = s exactly in
+/// IEEE arithmetic), zero otherwise.
+struct StoredParticleFrame {
+    std::vector<std::uint64_t> id;
+    std::vector<Vec3> position, velocity;
+    std::vector<double> radius;
+    std::vector<std::int32_t> state;
+    std::vector<double> temperature;
+    std::vector<Vec3> angularVelocity;
+
+    /// The frame to write again: temperature with heating, ω with spinning.
+    ParticleFrame view(ParticleFieldSet fields, bool heating, bool spinning) const;
+};
+
+/// Reads a frame that writeParticlesVtp wrote. Throws InputError naming the file when it cannot
+/// be read whole.
+StoredParticleFrame readParticlesVtp(const std::filesystem::path& file);
 
 } // namespace slides

@@ -9,18 +9,32 @@
 #include "slides/run/run_limits.h"
 #include "slides/surfaces/patch_wall.h"
 
+#include <sstream>
+
 namespace slides {
 
 namespace {
 
+/// Refuses the value of a command-line option where the key it overrides is (its line in the
+/// dictionary, 0 when the dictionary leaves the key to its default).
+[[noreturn]] void refuseOverride(const Scene& scene, const std::string& key,
+                                 const std::string& option, double value, const std::string& what) {
+    std::ostringstream message;
+    message << option << " " << value << " on the command line " << what;
+    throw InputError(scene.dictionaryFile.string(), keyLine(scene.dictionaryFile, key), key,
+                     message.str());
+}
+
 void applyOverrides(const SceneOverrides& overrides, Scene& scene) {
     if (overrides.endTime) {
         if (!(*overrides.endTime > 0))
-            throw InputError("command line", 0, "--end-time", "must be positive");
+            refuseOverride(scene, "time.endTime", "--end-time", *overrides.endTime,
+                           "must be positive");
         scene.time.endTime = *overrides.endTime;
     }
     if (overrides.dt) {
-        if (!(*overrides.dt > 0)) throw InputError("command line", 0, "--dt", "must be positive");
+        if (!(*overrides.dt > 0))
+            refuseOverride(scene, "time.dt", "--dt", *overrides.dt, "must be positive");
         scene.time.dt = *overrides.dt;
     }
     if (overrides.time) {
@@ -29,8 +43,13 @@ void applyOverrides(const SceneOverrides& overrides, Scene& scene) {
                              "only an OpenFOAM carrier (foamField) has time directories");
         scene.carrier.foamTime = *overrides.time;
     }
-    if (scene.time.dt > scene.time.endTime)
-        throw InputError("command line", 0, "--dt", "is longer than the end time");
+    if (scene.time.dt > scene.time.endTime) {
+        std::ostringstream dt, endTime;
+        dt << "is longer than time.endTime " << scene.time.endTime << " s";
+        endTime << "is shorter than time.dt " << scene.time.dt << " s";
+        if (overrides.dt) refuseOverride(scene, "time.dt", "--dt", scene.time.dt, dt.str());
+        refuseOverride(scene, "time.endTime", "--end-time", scene.time.endTime, endTime.str());
+    }
 }
 
 } // namespace

@@ -99,7 +99,7 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
         options.output.empty() ? options.caseDirectory / "slides" : options.output;
     const RunFingerprint fingerprint = fingerprintOf(scene.dictionaryFile, scene.time.dt);
     std::optional<CheckpointState> resumed;
-    if (options.restart) resumed = readCheckpoint(outputDirectory, scene.output.hdf5, fingerprint);
+    if (options.restart) resumed = readCheckpoint(outputDirectory, fingerprint);
     std::optional<RunOutput> output;
     agreeOnFailure(ranks, [&] {
         if (writes)
@@ -125,6 +125,13 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     Clock::duration stepping{};
+    // The whole run's times: those of the segments before a restart, and this one's.
+    const RunTimes earlier = resumed ? resumed->times : RunTimes{};
+    const auto runTimes = [&] {
+        using Seconds = std::chrono::duration<double>;
+        return RunTimes{earlier.wallSeconds + Seconds(Clock::now() - start).count(),
+                        earlier.steppingSeconds + Seconds(stepping).count()};
+    };
     double nextFrame = scene.output.interval;
     if (resumed) {
         nextFrame = resumed->nextFrameTime;
@@ -145,7 +152,7 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
         }
         if (options.checkpointEvery > 0 && stepper.steps() % options.checkpointEvery == 0)
-            writeCheckpoint(*output, stepper, nextFrame, fingerprint);
+            writeCheckpoint(*output, stepper, nextFrame, runTimes(), fingerprint);
         const long done = stepper.injected() - static_cast<long>(stepper.cloud().size());
         double fraction = stepper.time() / scene.time.endTime;
         if (scene.time.stopWhenAllDone)
@@ -153,12 +160,9 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
         progress.update(fraction, stepper.time(), stepper.cloud().size());
     }
     progress.finish();
-    const RunMetrics metrics{std::chrono::duration<double>(Clock::now() - start).count(),
-                             std::chrono::duration<double>(stepping).count(),
-                             threads,
-                             carrier.describe(),
-                             carrier.boundaryNames(),
-                             carrier.figures()};
+    const RunTimes times = runTimes();
+    const RunMetrics metrics{times.wallSeconds,  times.steppingSeconds,   threads,
+                             carrier.describe(), carrier.boundaryNames(), carrier.figures()};
     if (!ranks.parallel()) {
         const RunSnapshot snapshot = stepper.snapshot();
         const auto summary = runSummary(resolved, snapshot, metrics);

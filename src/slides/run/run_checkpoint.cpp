@@ -3,7 +3,7 @@
 namespace slides {
 
 void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nextFrameTime,
-                     const RunFingerprint& fingerprint) {
+                     const RunTimes& times, const RunFingerprint& fingerprint) {
     std::optional<SpringColumns> springs;
     if (const SoftSphereCollisions* softSpheres = stepper.softSpheres()) {
         springs.emplace();
@@ -13,8 +13,8 @@ void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nex
             springs->displacement.push_back(spring.displacement);
         }
     }
-    writeCheckpoint(output.directory(), output.hdf5File(), stepper.snapshot(),
-                    springs ? &*springs : nullptr, output.frames(), nextFrameTime, fingerprint);
+    writeCheckpoint(output.directory(), stepper.snapshot(), springs ? &*springs : nullptr,
+                    output.frames(), nextFrameTime, times, fingerprint);
 }
 
 void resumeFromCheckpoint(Stepper& stepper, CheckpointState&& state) {

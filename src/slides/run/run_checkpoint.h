@@ -15,7 +15,7 @@ namespace slides {
 
 /// Writes output.directory()/checkpoint.h5 atomically; throws OutputError.
 void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nextFrameTime,
-                     const RunFingerprint& fingerprint);
+                     const RunTimes& times, const RunFingerprint& fingerprint);
 
 /// Continues stepper from a checkpoint's state (its frames stay with the caller).
 void resumeFromCheckpoint(Stepper& stepper, CheckpointState&& state);

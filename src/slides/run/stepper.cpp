@@ -38,6 +38,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     exchange_ = exchange;
+    plane_ = planeConstraintOf(carrier);
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
     buildStages();
 }
@@ -112,6 +113,7 @@ void Stepper::buildStages() {
     stages_.clear();
     if (carrier_.keepsLocations()) stages_.push_back(&Stepper::orderInMemory);
     stages_.push_back(&Stepper::inject);
+    if (plane_) stages_.push_back(&Stepper::holdInPlane);
     if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
     // The paths' starts, for the stream step through a gas (the midpoint rule), impulse
     // collisions, heating and meeting surfaces at the touch.
@@ -119,12 +121,16 @@ void Stepper::buildStages() {
         stages_.push_back(&Stepper::recordPathStarts);
     if (gas) stages_.push_back(&Stepper::sampleGas);
     if (gas && dispersion_.on()) stages_.push_back(&Stepper::disperse);
+    if (plane_ && gas && dispersion_.on()) stages_.push_back(&Stepper::holdEddiesInPlane);
     stages_.push_back(gas ? &Stepper::advance : &Stepper::flyBallistically);
+    if (plane_) stages_.push_back(&Stepper::holdInPlane);
     if (heating_.on()) stages_.push_back(&Stepper::heat);
     if (collisions_) stages_.push_back(&Stepper::collide);
     if (softSpheres_) stages_.push_back(&Stepper::kickByNewContacts);
     if (exchange_) stages_.push_back(&Stepper::exchangeAcrossRanks);
     stages_.push_back(&Stepper::meetSurfaces);
+    // Contacts of particles in the plane act in it; a rebound off a surface may leave it.
+    if (plane_) stages_.push_back(&Stepper::holdInPlane);
 }
 
 void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
@@ -165,6 +171,10 @@ void Stepper::exchangeAcrossRanks(double) {
         cloud_, firstFresh_,
         {stepLengths_, startPositions_, startVelocities_, startTemperatures_, gas_.temperature});
 }
+
+void Stepper::holdInPlane(double) { plane_->hold(cloud_); }
+
+void Stepper::holdEddiesInPlane(double) { plane_->project(gas_.velocity); }
 
 void Stepper::collide(double) { collisions_->collide(cloud_, startPositions_, stepLengths_); }
 
@@ -219,6 +229,7 @@ void Stepper::advance(double h) {
         const auto sampleEnd = [&](const std::vector<Vec3>& points, CarrierSample& out) {
             sampleCarrier(points, midpointLocations_, time_ + h, maxeyRiley_->needs(), out);
             dispersion_.addTo(out.velocity);
+            if (plane_) plane_->project(out.velocity);
         };
         return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
     }
@@ -242,6 +253,7 @@ void Stepper::advance(double h) {
         midpointLocations_ = cloud_.carrierLocation;
         sampleCarrier(x, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, midpointGas_);
         dispersion_.addTo(midpointGas_.velocity);
+        if (plane_) plane_->project(midpointGas_.velocity);
         relaxBatchExactly({x0, v0, x, v, midpointGas_.velocity, v, radius, stepLengths_}, drag_, a,
                           1.0);
         break;

@@ -30,6 +30,8 @@
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
 //      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
+// On a 2-D carrier (a mesh between `empty` patches) the particles are held in its plane after
+// injection, the eddies' draw, the stream step and the surfaces (integrate/plane_constraint.h).
 // The step is the ordered list of these stages, each present only when its term is on, built
 // once at construction (Stepper::buildStages): a new stage is added there.
 // The particle loop runs in parallel; each particle's update depends only on its own state,
@@ -45,6 +47,7 @@
 #include "slides/integrate/injector.h"
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
+#include "slides/integrate/plane_constraint.h"
 #include "slides/integrate/turbulent_dispersion.h"
 #include "slides/io/run_snapshot.h"
 #include "slides/physics/drag.h"
@@ -127,6 +130,10 @@ private:
     void exchangeAcrossRanks(double h);
     /// 4. particles that touched a surface or left the domain leave the cloud.
     void meetSurfaces(double h);
+    /// 2-D carrier: the particles back in the plane after a stage that may leave it.
+    void holdInPlane(double h);
+    /// 2-D carrier: the gas velocity seen, with its eddy fluctuation, projected on the plane.
+    void holdEddiesInPlane(double h);
     /// Where escaping particle i left: 1 + the carrier's patch it crossed, or 0 (domain box).
     std::size_t exitOf(std::size_t i) const;
     /// Particle i's temperature over this step, with heat transfer.
@@ -153,6 +160,7 @@ private:
     std::optional<MaxeyRileyStepper> maxeyRiley_;     ///< when an unsteady term is on
     std::optional<ParticleCollisions> collisions_;    ///< when collisions.model is impulse
     std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
+    std::optional<PlaneConstraint> plane_;            ///< when the carrier is 2-D
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
     std::vector<Stage> stages_;
