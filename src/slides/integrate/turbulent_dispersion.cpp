@@ -35,9 +35,9 @@ void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
     }
 }
 
-void TurbulentDispersion::addTo(std::vector<Vec3>& gasVelocity) const {
+void TurbulentDispersion::addTo(std::span<Vec3> gasVelocity, std::size_t first) const {
     if (!on()) return;
-    for (std::size_t i = 0; i < gasVelocity.size(); ++i) gasVelocity[i] += fluctuations_[i];
+    for (std::size_t i = 0; i < gasVelocity.size(); ++i) gasVelocity[i] += fluctuations_[first + i];
 }
 
 } // namespace slides

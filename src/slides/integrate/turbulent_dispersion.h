@@ -17,6 +17,7 @@
 #include "slides/physics/drag.h"
 #include "slides/physics/physics_settings.h"
 
+#include <span>
 #include <vector>
 
 namespace slides {
@@ -32,8 +33,9 @@ public:
     /// to gas.velocity[i] (gas holds U, k, ε at the particles).
     void perturb(ParticleCloud& cloud, CarrierSample& gas, const std::vector<double>& stepLengths,
                  const DragParameters& drag, const Vec3& bodyAcceleration);
-    /// Adds the ū' of the last perturb() to another sample at the same particles.
-    void addTo(std::vector<Vec3>& gasVelocity) const;
+    /// Adds the ū' of the last perturb() to another sample at the same particles, its entry 0
+    /// at particle `first` (a block of the cloud).
+    void addTo(std::span<Vec3> gasVelocity, std::size_t first) const;
 
 private:
     DispersionModel model_;
