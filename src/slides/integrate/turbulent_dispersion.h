@@ -8,8 +8,9 @@
 // gives newly injected particles a fresh eddy state and adds ū' to the sampled velocities, and
 // adds the same ū' to its second, midpoint sample (addTo). The eddy crossing uses the
 // particle's drag response τ (physics/drag.h) at its step-start slip and the body
-// acceleration. Random numbers: stream (injection.seed, particle id, eddy, eddy counter), so
-// the result does not depend on the thread count and is the same after a restart.
+// acceleration; the eddy-interaction step runs in SIMD lanes (integrate/eddy_batch.h). Random
+// numbers: stream (injection.seed, particle id, eddy, eddy counter), so the result does not
+// depend on the thread count and is the same after a restart.
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
