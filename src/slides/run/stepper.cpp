@@ -239,10 +239,10 @@ void Stepper::advanceByMidpointRule(double h) {
     const auto blocks = static_cast<std::ptrdiff_t>((count + midpointBlock - 1) / midpointBlock);
     const bool keepsLocations = carrier_.keepsLocations();
     const bool sampled = samplesGasForAll();
+    const bool parallel = static_cast<std::ptrdiff_t>(count) >= minimumParallelBatch;
     midpointScratch_.resize(
         std::max(midpointScratch_.size(), static_cast<std::size_t>(omp_get_max_threads())));
-#pragma omp parallel for schedule(dynamic) if (static_cast <std::ptrdiff_t>(count) >=              \
-                                               minimumParallelBatch)
+#pragma omp parallel for schedule(dynamic) if (parallel)
     for (std::ptrdiff_t b = 0; b < blocks; ++b) {
         MidpointScratch& scratch = midpointScratch_[static_cast<std::size_t>(omp_get_thread_num())];
         const std::size_t first = static_cast<std::size_t>(b) * midpointBlock;
