@@ -7,9 +7,14 @@
 // a chain of about ten operations, each within 4 ulp in Highway's maths (expm1, log) and ½ ulp
 // otherwise, so within ~40 ulp ≈ 1e-14 of the largest term it sums; 1e-13 of that term leaves a
 // margin of ten. Both kernels give each particle the same bits whatever the batch's split or
-// the thread count.
+// the thread count. The eddy-interaction step (integrate/eddy_batch.h against
+// eddyInteractionStep, physics/dispersion.h; Gosman & Ioannides 1983) agrees with its scalar
+// reference, step by step from the same state over twenty steps of particles that stay in their
+// eddy, start one, cross one, or see laminar, broken or long-step gas: the random draws and the
+// lifetime left exactly, ū' to 1e-13 of σ, the eddy length left to 1e-13 of l_e.
 #include "slides/carrier/analytic_jet.h"
 #include "slides/carrier/bickley_batch.h"
+#include "slides/integrate/eddy_batch.h"
 #include "slides/integrate/integrator.h"
 #include "slides/integrate/relaxation_batch.h"
 
@@ -17,6 +22,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -118,6 +124,112 @@ TEST(RelaxationKernel, NonFiniteGasGivesNonFiniteState) {
     EXPECT_FALSE(p.x[5].allFinite());
     EXPECT_FALSE(p.v[5].allFinite());
     EXPECT_TRUE(p.x[4].allFinite() && p.x[6].allFinite()) << "lanes stay independent";
+}
+
+/// Particles in turbulence for the eddy step: k from 0.1 to 10 m²/s² and T_L from 1e-5 to
+/// 1e-2 s (log-uniform; so the 1e-5 s steps end eddies often and rarely, by lifetime and by
+/// crossing), with laminar (k = 0), broken (ε NaN) and long steps (h = 1e-3 s, beyond 50 T_L
+/// where T_L < 2e-5 s) among them; slips up to 3.5 m/s.
+struct Turbulent {
+    std::vector<EddyState> eddy;
+    std::vector<ParticleId> id;
+    std::vector<Vec3> v, u, fluctuation;
+    std::vector<double> k, epsilon, radius, h;
+
+    EddyBatch batch(std::size_t first, std::size_t count) {
+        const auto part = [&](auto& array) { return std::span(array).subspan(first, count); };
+        return {part(eddy),    part(id),     part(v), part(u),          part(k),
+                part(epsilon), part(radius), part(h), part(fluctuation)};
+    }
+};
+
+Turbulent turbulentParticles(std::uint32_t seed) {
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(-1, 1), logUniform(0, 1);
+    Turbulent p;
+    for (std::size_t i = 0; i < particleCount; ++i) {
+        p.eddy.push_back({});
+        p.id.push_back(1000 + i);
+        p.v.push_back(Vec3(unit(random), unit(random), unit(random)));
+        p.u.push_back(Vec3(unit(random), unit(random), unit(random)));
+        p.fluctuation.push_back(Vec3::Zero());
+        const double k = 0.1 * std::pow(100, logUniform(random));
+        const double lagrangianTime = 1e-5 * std::pow(1e3, logUniform(random));
+        p.k.push_back(i % 11 == 0 ? 0.0 : k);
+        p.epsilon.push_back(i % 13 == 0 ? std::numeric_limits<double>::quiet_NaN()
+                                        : 1.5 * 0.09 / 0.7 * k / lagrangianTime); // T_L
+        p.radius.push_back(1e-6 * std::pow(100, logUniform(random)));
+        p.h.push_back(i % 17 == 0 ? 1e-3 : 1e-5);
+    }
+    return p;
+}
+
+TEST(EddyKernel, MatchesScalarEddyInteractionStep) {
+    const DragParameters drag{DragModel::putnam, 1.2, 1.5e-5, 2500};
+    const Vec3 a(0.3, -9.81, 0.2);
+    const DispersionConstants constants;
+    const std::uint64_t seed = 3;
+    Turbulent simd = turbulentParticles(9);
+    long inLanes = 0, newEddies = 0;
+    for (int step = 0; step < 20; ++step) {
+        const std::vector<EddyState> before = simd.eddy;
+        std::vector<EddyState> scalar = simd.eddy;
+        eddyInteractionBatch(simd.batch(0, particleCount), constants, drag, a, seed);
+        for (std::size_t i = 0; i < particleCount; ++i) {
+            const Vec3 slip = simd.v[i] - simd.u[i];
+            const ParticleResponse particle{slip,
+                                            dragResponseTime(drag, simd.radius[i], slip.norm()), a};
+            const Vec3 expected =
+                eddyInteractionStep(scalar[i], constants, simd.k[i], simd.epsilon[i], particle,
+                                    simd.h[i], RandomKey{seed, simd.id[i]});
+            ASSERT_EQ(simd.eddy[i].count, scalar[i].count) << "particle " << i << " step " << step;
+            EXPECT_EQ(simd.eddy[i].standardised, scalar[i].standardised) << "particle " << i;
+            if (!expected.allFinite()) {
+                EXPECT_FALSE(simd.fluctuation[i].allFinite()) << "particle " << i;
+                continue;
+            }
+            const double sigma = fluctuationRms(simd.k[i]);
+            EXPECT_LE((simd.fluctuation[i] - expected).norm(),
+                      tolerance * sigma * (1 + expected.norm() / std::max(sigma, 1e-300)))
+                << "particle " << i << " step " << step;
+            EXPECT_EQ(simd.eddy[i].timeLeft, scalar[i].timeLeft) << "particle " << i;
+            const double eddyLength = eddyLengthScale(constants, simd.k[i], simd.epsilon[i]);
+            EXPECT_LE(std::abs(simd.eddy[i].lengthLeft - scalar[i].lengthLeft),
+                      tolerance * eddyLength)
+                << "particle " << i << " step " << step;
+            newEddies += scalar[i].count != before[i].count;
+            inLanes += simd.k[i] > 0 && scalar[i].count == before[i].count;
+        }
+    }
+    EXPECT_GT(inLanes, 5 * static_cast<long>(particleCount)) << "a quarter stay in their eddy";
+    EXPECT_GT(newEddies, static_cast<long>(particleCount)) << "and many begin a new one";
+}
+
+TEST(EddyKernel, SameBitsForAnySplitAndThreadCount) {
+    const DragParameters drag{DragModel::haiderLevenspiel, 1.2, 1.5e-5, 5680};
+    const Vec3 a(0, -9.81, 0);
+    const DispersionConstants constants;
+    Turbulent whole = turbulentParticles(4), split = whole, twoThreads = whole;
+    const int threads = omp_get_max_threads();
+    for (int step = 0; step < 5; ++step) {
+        eddyInteractionBatch(whole.batch(0, particleCount), constants, drag, a, 1);
+        // A batch smaller than a vector, then one starting mid-vector.
+        eddyInteractionBatch(split.batch(0, 3), constants, drag, a, 1);
+        eddyInteractionBatch(split.batch(3, particleCount - 3), constants, drag, a, 1);
+        omp_set_num_threads(2);
+        eddyInteractionBatch(twoThreads.batch(0, particleCount), constants, drag, a, 1);
+        omp_set_num_threads(threads);
+    }
+    for (std::size_t i = 0; i < particleCount; ++i) {
+        for (const Turbulent* other : {&split, &twoThreads}) {
+            EXPECT_EQ(std::memcmp(&whole.fluctuation[i], &other->fluctuation[i], sizeof(Vec3)), 0)
+                << "particle " << i;
+            EXPECT_EQ(whole.eddy[i].standardised, other->eddy[i].standardised) << "particle " << i;
+            EXPECT_EQ(whole.eddy[i].timeLeft, other->eddy[i].timeLeft) << "particle " << i;
+            EXPECT_EQ(whole.eddy[i].lengthLeft, other->eddy[i].lengthLeft) << "particle " << i;
+            EXPECT_EQ(whole.eddy[i].count, other->eddy[i].count) << "particle " << i;
+        }
+    }
 }
 
 class JetKernel : public testing::TestWithParam<JetGeometry> {};

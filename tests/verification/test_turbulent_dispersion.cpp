@@ -200,6 +200,32 @@ TEST(EddySampling, TracersNeverCrossEddiesHeavyParticlesCrossAfterTheEddyLength)
         << "expected " << expected << " eddies";
 }
 
+TEST(EddySampling, AnEddyIsLeftWhereThePathRelativeToItsGasReachesTheLengthLeft) {
+    // Without drift the path relative to the eddy gas is Δ(t) = w τ (1 − e^(−t/τ)), so a
+    // length L is crossed at t_c = −τ ln(1 − L/(|w|τ)) = τ ln 2 for |w|τ = 2L. The step's
+    // ū' is then σ/h (ξ1 t_c + ξ2 (h − t_c)), ξ2 the next eddy of the same stream, which lasts
+    // the rest of the step (T_L = 0.193 s, l_e = 0.16 m). Tolerance 1e-14 σ: t_c to ~1e-16
+    // relative (a bisection to 2^-40 of the step errs by ~1e-12).
+    const double tau = 1e-3, h = 1e-3, length = 1e-3;
+    const double sigma = fluctuationRms(kineticEnergy);
+    const Vec3 xi1(0.3, -0.2, 0.5), relative(2 * length / tau, 0, 0);
+    EddyState state;
+    state.standardised = xi1;
+    state.timeLeft = 1.0;
+    state.lengthLeft = length;
+    EddyState next = state;
+    drawEddy(next, lagrangianTime, eddyLengthScale(constants, kineticEnergy, dissipation), {7, 3});
+    const double crossing = tau * std::log(2.0);
+    ASSERT_GT(next.timeLeft, h - crossing) << "the next eddy lasts the step";
+    const Vec3 fluctuation =
+        eddyInteractionStep(state, constants, kineticEnergy, dissipation,
+                            {relative + sigma * xi1, tau, Vec3::Zero()}, h, {7, 3});
+    const Vec3 expected = sigma / h * (xi1 * crossing + next.standardised * (h - crossing));
+    EXPECT_LE((fluctuation - expected).norm(), 1e-14 * sigma);
+    EXPECT_EQ(state.count, 1u);
+    EXPECT_EQ(state.standardised, next.standardised);
+}
+
 TEST(EddySampling, LaminarGasGivesNoFluctuationAndBrokenInputIsNotHidden) {
     EddyState state;
     const ParticleResponse still{Vec3::Zero(), 1e-3, Vec3::Zero()};

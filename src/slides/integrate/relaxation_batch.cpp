@@ -6,6 +6,7 @@
 #include <hwy/foreach_target.h> // IWYU pragma: keep
 
 #include "slides/core/simd_math-inl.h"
+#include "slides/physics/drag_response-inl.h"
 
 #include <hwy/highway.h>
 
@@ -14,29 +15,6 @@
 HWY_BEFORE_NAMESPACE();
 namespace slides::HWY_NAMESPACE {
 namespace {
-
-/// f(Re) = Cd·Re/24 of physics/drag.h, lane by lane.
-template <class D, class V> HWY_INLINE V DragCorrection(D d, DragModel model, V reynolds) {
-    const V one = hn::Set(d, 1.0);
-    const V above1000 = hn::Mul(reynolds, hn::Set(d, 1.0 / 24.0));
-    const auto highRe = hn::Gt(reynolds, hn::Set(d, 1000.0));
-    switch (model) {
-    case DragModel::stokes: return one;
-    case DragModel::schillerNaumann: // Re < 1000: 1 + 0.15 Re^0.687, else 0.44 Re/24
-        return hn::IfThenElse(hn::Ge(reynolds, hn::Set(d, 1000.0)),
-                              hn::Mul(hn::Set(d, 0.44), above1000),
-                              hn::MulAdd(hn::Set(d, 0.15), Pow(d, reynolds, 0.687), one));
-    case DragModel::haiderLevenspiel: { // Eq. 3.17: Re 0.4251/(24 (1 + 6880.95/Re))
-        const V wake = hn::Div(hn::Mul(hn::Mul(reynolds, reynolds), hn::Set(d, 0.4251 / 24.0)),
-                               hn::Add(reynolds, hn::Set(d, 6880.95)));
-        return hn::Add(hn::MulAdd(hn::Set(d, 0.1806), Pow(d, reynolds, 0.6459), one), wake);
-    }
-    case DragModel::putnam: // Re ≤ 1000: 1 + Re^(2/3)/6, else 0.424 Re/24
-        return hn::IfThenElse(highRe, hn::Mul(hn::Set(d, 0.424), above1000),
-                              hn::MulAdd(Pow(d, reynolds, 2.0 / 3.0), hn::Set(d, 1.0 / 6.0), one));
-    }
-    return one;
-}
 
 /// relaxExactly for the lanes of one vector starting at particle `first`.
 struct RelaxVector {
@@ -57,13 +35,7 @@ struct RelaxVector {
         const V h = hn::Mul(hn::Set(d, fraction), hn::LoadU(d, &b.stepLength[first]));
         const V s0 = hn::Sub(u0, w0), s1 = hn::Sub(u1, w1), s2 = hn::Sub(u2, w2);
         const V slip = hn::Sqrt(hn::MulAdd(s0, s0, hn::MulAdd(s1, s1, hn::Mul(s2, s2))));
-        // Re = 2 R |u − w| / ν; τ = τ_St / f(Re), τ_St = 2 ρp R² / (9 ρf ν).
-        const V reynolds =
-            hn::Mul(hn::Mul(hn::Set(d, 2.0 / drag.kinematicViscosity), radius), slip);
-        const double stokes =
-            2.0 * drag.particleDensity / (9.0 * drag.fluidDensity * drag.kinematicViscosity);
-        const V tau = hn::Div(hn::Mul(hn::Set(d, stokes), hn::Mul(radius, radius)),
-                              DragCorrection(d, drag.model, reynolds));
+        const V tau = ResponseTime(d, drag, radius, slip);
         // w = u + τa;  1 − e^(−h/τ);  x += w h + (v − w) τ (1 − e^(−h/τ));  v = w + (v − w)
         // e^(−h/τ).
         const V decayed = hn::Neg(hn::Expm1(d, hn::Neg(hn::Div(h, tau))));

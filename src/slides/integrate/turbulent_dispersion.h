@@ -8,8 +8,9 @@
 // gives newly injected particles a fresh eddy state and adds ū' to the sampled velocities, and
 // adds the same ū' to its second, midpoint sample (addTo). The eddy crossing uses the
 // particle's drag response τ (physics/drag.h) at its step-start slip and the body
-// acceleration. Random numbers: stream (injection.seed, particle id, eddy, eddy counter), so
-// the result does not depend on the thread count and is the same after a restart.
+// acceleration; the eddy-interaction step runs in SIMD lanes (integrate/eddy_batch.h). Random
+// numbers: stream (injection.seed, particle id, eddy, eddy counter), so the result does not
+// depend on the thread count and is the same after a restart.
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
@@ -17,6 +18,7 @@
 #include "slides/physics/drag.h"
 #include "slides/physics/physics_settings.h"
 
+#include <span>
 #include <vector>
 
 namespace slides {
@@ -32,8 +34,9 @@ public:
     /// to gas.velocity[i] (gas holds U, k, ε at the particles).
     void perturb(ParticleCloud& cloud, CarrierSample& gas, const std::vector<double>& stepLengths,
                  const DragParameters& drag, const Vec3& bodyAcceleration);
-    /// Adds the ū' of the last perturb() to another sample at the same particles.
-    void addTo(std::vector<Vec3>& gasVelocity) const;
+    /// Adds the ū' of the last perturb() to another sample at the same particles, its entry 0
+    /// at particle `first` (a block of the cloud).
+    void addTo(std::span<Vec3> gasVelocity, std::size_t first) const;
 
 private:
     DispersionModel model_;

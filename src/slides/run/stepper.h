@@ -13,7 +13,9 @@
 //   3. each particle is advanced by the chosen integrator (integrate/integrator.h) under drag
 //      (physics/drag.h) and gravity with buoyancy (physics/body_force.h) — without gas
 //      (carrier none) by gravity alone, exactly; exponentialMidpoint
-//      samples the carrier a second time at the half-step positions;
+//      samples the carrier a second time at the half-step positions, block by block so the
+//      samples and the prediction live only in a thread's cache-sized scratch (and takes the
+//      sample of 2 there too when no other stage reads it);
 //      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator, on the sample of 2
 //      (with its eddy fluctuations) and a second one at its predicted ends;
@@ -57,6 +59,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace slides {
@@ -139,8 +142,14 @@ private:
     /// Particle i's temperature over this step, with heat transfer.
     std::optional<StepTemperature> temperatureOver(std::size_t i) const;
     /// The carrier at points, from and updating their locations when the carrier keeps them.
-    void sampleCarrier(const std::vector<Vec3>& points, std::vector<std::int32_t>& locations,
-                       double time, CarrierNeeds needs, CarrierSample& out) const;
+    void sampleCarrier(std::span<const Vec3> points, std::span<std::int32_t> locations, double time,
+                       CarrierNeeds needs, CarrierSample& out) const;
+    /// 3. the exponential midpoint rule, block by block.
+    void advanceByMidpointRule(double h);
+    /// Whether the gas is sampled at the step's start for the whole cloud (stage 2): when
+    /// dispersion, heating or the Maxey–Riley step read it, or the integrator is not the
+    /// exponential midpoint rule, which samples each of its blocks itself.
+    bool samplesGasForAll() const;
 
     const Scene& scene_;
     const CarrierField& carrier_;
@@ -169,13 +178,24 @@ private:
 
     // Scratch, reused every step.
     CarrierSample gas_;
-    CarrierSample midpointGas_;
     std::vector<double> stepLengths_; ///< h, or the remainder of the step for new particles
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
     std::vector<double> startTemperatures_; ///< with heat transfer
-    /// A mesh carrier's cells of the midpoints (or of the Maxey–Riley step's predicted ends).
+    /// A mesh carrier's cells of the Maxey–Riley step's predicted ends.
     std::vector<std::int32_t> midpointLocations_;
+    /// One thread's scratch of the midpoint rule: a block's samples, its predicted state at
+    /// t + h/2 and their mesh locations.
+    struct MidpointScratch {
+        CarrierSample gas;
+        CarrierSample midpointGas;
+        std::vector<Vec3> position;
+        std::vector<Vec3> velocity;
+        std::vector<std::int32_t> locations;
+    };
+    /// Particles a block of the midpoint rule: its scratch stays in the core's cache.
+    static constexpr std::size_t midpointBlock = 1024;
+    std::vector<MidpointScratch> midpointScratch_; ///< one a thread
     std::vector<std::uint8_t> fliesOn_; ///< particles whose path meets nothing (meetSurfaces)
 };
 
