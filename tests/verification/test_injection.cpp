@@ -230,6 +230,47 @@ TEST(SeveralInjectors, RestartResumesEachInjectorWhereItStood) {
     }
 }
 
+TEST(SeveralInjectors, BadInjectorsAreRefusedAtTheirKey) {
+    test::ScratchDirectory scratch("inject-refusals");
+    const auto refusal = [&](const std::string& injection) {
+        try {
+            sceneOf(scratch, sprayDictionary(injection, 0));
+        } catch (const InputError& error) {
+            return error.key() + ": " + error.reason();
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; duration 1; } }"),
+              "injectors.a.count: give two of count, rate and duration (mode rate)");
+    EXPECT_EQ(refusal("injectors { a { model cone; count 10; rate 1e3; coneCoeffs { "
+                      "innerHalfAngle 20; outerHalfAngle 10; speed 5; } } }"),
+              "injectors.a.coneCoeffs.outerHalfAngle: must be larger than innerHalfAngle");
+    EXPECT_EQ(refusal("injectors { a { model sprinkler; } }"),
+              "injectors.a.model: unknown model 'sprinkler'; valid model names are:\n    disc\n"
+              "    cone\n    file");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; } }\ninjection { rate 5; }"),
+              "injection.rate: with injectors, injection gives only the seed");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; radiusDistribution { type normal; "
+                      "mean 1e-5; standardDeviation 1e-6; weighting mass; } } }"),
+              "injectors.a.radiusDistribution.weighting: mass weighting is for types fixed, "
+              "logNormal, rosinRammler and table");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; radiusDistribution { type "
+                      "rosinRammler; scale 1e-5; spread 2; weighting mass; } } }"),
+              "injectors.a.radiusDistribution.minimum: a mass-weighted rosinRammler needs "
+              "minimum > 0 (its number of particles grows without bound as r → 0)");
+    // Each injector is checked inside the domain box (run/injection_check.h).
+    std::ofstream(scratch.path / "constant" / "slidesProperties")
+        << sprayDictionary("injectors { a { count 10; rate 1e3; } b { centre (0 0.029 0); "
+                           "radius 2e-3; count 10; rate 1e3; } }",
+                           0);
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", scratch.path / "log"), 2);
+    EXPECT_NE(test::slurp(scratch.path / "log")
+                  .find("key 'injectors.b.radius': the disc of injector b of radius 0.002 m is "
+                        "not inside the domain box"),
+              std::string::npos)
+        << test::slurp(scratch.path / "log");
+}
+
 // ---- cone ----------------------------------------------------------------------------------
 
 /// The directions and speeds of 1e5 particles of a cone injector (no gas is sampled for them).
@@ -410,6 +451,45 @@ TEST(SizeDistribution, MassWeightedLogNormalIsTheHatchChoateNumberLaw) {
     EXPECT_NEAR(distribution.meanRadius(), numberMedian * std::exp(0.5 * sigma * sigma), 1e-18);
 }
 
+TEST(SizeDistribution, MeasuredTableNumberAndMassWeighted) {
+    test::ScratchDirectory scratch("inject-size-table");
+    const auto file = scratch.path / "constant" / "sizes.csv";
+    std::ofstream(file) << "# a measured distribution\nd F\n10e-6 0\n20e-6 0.1\n40e-6 0.6\n"
+                           "60e-6 0.9\n100e-6 1\n";
+    RadiusDistribution distribution;
+    distribution.kind = RadiusDistributionKind::table;
+    readSizeTable(file, distribution);
+    const std::vector<double> r{5e-6, 10e-6, 20e-6, 30e-6, 50e-6}, F{0, 0.1, 0.6, 0.9, 1};
+    ASSERT_EQ(distribution.tableRadius, r);
+    // Number-weighted: linear between the rows.
+    const auto table = [&](double x) {
+        const auto i = std::size_t(std::upper_bound(r.begin(), r.end(), x) - r.begin());
+        if (i == 0) return 0.0;
+        if (i == r.size()) return 1.0;
+        return F[i - 1] + (x - r[i - 1]) / (r[i] - r[i - 1]) * (F[i] - F[i - 1]);
+    };
+    const std::vector<double> number = radiiOf(distribution);
+    EXPECT_LT(ksStatistic(number, table), ksCritical);
+    // Mass-weighted: the drawn spheres' mass below each row is the table's F, to 4 standard
+    // errors of an r³-weighted fraction (effective sample size (Σw)²/Σw²).
+    distribution.weighting = SizeWeighting::mass;
+    const std::vector<double> radii = radiiOf(distribution);
+    double total = 0, squares = 0;
+    for (const double x : radii) {
+        total += x * x * x;
+        squares += std::pow(x, 6);
+    }
+    const double effective = total * total / squares;
+    for (std::size_t k = 1; k + 1 < r.size(); ++k) {
+        double below = 0;
+        for (const double x : radii)
+            if (x < r[k]) below += x * x * x;
+        EXPECT_NEAR(below / total, F[k], 4 * std::sqrt(F[k] * (1 - F[k]) / effective)) << r[k];
+    }
+    EXPECT_NEAR(RadiusSampler(distribution).meanRadius(), mean(radii),
+                4 * standardDeviation(radii) / std::sqrt(double(draws)));
+}
+
 // ---- file ----------------------------------------------------------------------------------
 
 TEST(FileInjection, CsvRowsGiveThePositionsVelocitiesSizesAndTimes) {
@@ -452,7 +532,7 @@ TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     EXPECT_EQ(refusal("x y z u v w d t\n0 0 0 1 1 1 1e-4 2\n0 0 0 1 1 1 1e-4 1\n"),
               "3 t: goes back in time: rows must be in order of injection time");
     EXPECT_EQ(refusal("x y z u v w diameter\n"),
-              "1 diameter: unknown column; columns are x y z u v w, d or r, t");
+              "1 diameter: unknown column; columns are x y z u v w d r t");
     EXPECT_EQ(refusal("x y z u v w r\n0 0 0 1 1 1\n"), "2 : 6 values, the header names 7 columns");
     // The command line: one message, exit status 2.
     std::ofstream(table) << "x y z u v w r\n0 0 0 1 1 1 -1\n";

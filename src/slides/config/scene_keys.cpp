@@ -134,7 +134,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"particles.radiusDistribution.type", K::word, "-", "fixed",
          namesOf(radiusDistributionNames()), R::any,
          "fixed: value; normal: mean, standardDeviation; logNormal: median, "
-         "geometricStandardDeviation; rosinRammler: scale, spread."},
+         "geometricStandardDeviation; rosinRammler: scale, spread; table: file."},
         {"particles.radiusDistribution.value", K::scalar, "m", "-", {}, R::positive,
          "Radius for type fixed.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.mean", K::scalar, "m", "-", {}, R::positive,
@@ -154,11 +154,15 @@ std::vector<KeyDeclaration> declareKeys() {
          "lies below it.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.spread", K::scalar, "-", "-", {}, R::positive,
          "n of type rosinRammler (larger: narrower).", 0.1, 100},
+        {"particles.radiusDistribution.file", K::word, "-", "-", {}, R::any,
+         "Type table: a CSV with columns r (or d) [m] and F, the cumulative fraction below, "
+         "rising from 0 to 1, linear in r between rows (integrate/size_distribution.h). "
+         "Relative to the case directory."},
         {"particles.radiusDistribution.weighting", K::word, "-", "number",
          namesOf(sizeWeightingNames()), R::any,
          "What the distribution's parameters describe: number (a draw per particle) or mass "
          "(e.g. a mass-median radius; drawn as the number distribution f_m/r³; types fixed, "
-         "logNormal, rosinRammler; rosinRammler needs minimum > 0)."},
+         "logNormal, rosinRammler, table; rosinRammler needs minimum > 0)."},
         {"particles.material", K::dictionary, "-", "-", {}, R::any,
          "Elastic and adhesive properties (Table 5.2), for collision and deposition models."},
         {"particles.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,

@@ -7,6 +7,7 @@
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
 #include "slides/integrate/particle_file.h"
+#include "slides/integrate/size_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -262,8 +263,10 @@ private:
     const Dictionary& top_;
 };
 
-/// The radius distribution of the dictionary at base ("particles.radiusDistribution.").
-RadiusDistribution readRadiusDistribution(const KeyReader& keys, const std::string& base) {
+/// The radius distribution of the dictionary at base ("particles.radiusDistribution."); a
+/// table's file is relative to caseDirectory.
+RadiusDistribution readRadiusDistribution(const KeyReader& keys, const std::string& base,
+                                          const std::filesystem::path& caseDirectory) {
     RadiusDistribution radius;
     radius.kind = *valueNamed(radiusDistributionNames(), keys.word(base + "type"));
     radius.minimum = keys.scalar(base + "minimum");
@@ -276,6 +279,10 @@ RadiusDistribution readRadiusDistribution(const KeyReader& keys, const std::stri
         keys.require(base + "standardDeviation", "for type normal");
         radius.mean = keys.scalar(base + "mean");
         radius.standardDeviation = keys.scalar(base + "standardDeviation");
+    } else if (radius.kind == RadiusDistributionKind::table) {
+        keys.require(base + "file", "for type table");
+        const std::filesystem::path file = keys.word(base + "file");
+        readSizeTable(file.is_absolute() ? file : caseDirectory / file, radius);
     } else if (radius.kind == RadiusDistributionKind::rosinRammler) {
         keys.require(base + "scale", "for type rosinRammler");
         keys.require(base + "spread", "for type rosinRammler");
@@ -291,8 +298,8 @@ RadiusDistribution readRadiusDistribution(const KeyReader& keys, const std::stri
         keys.fail(base + "maximum", "must be larger than minimum");
     radius.weighting = *valueNamed(sizeWeightingNames(), keys.word(base + "weighting"));
     if (radius.weighting == SizeWeighting::mass && radius.kind == RadiusDistributionKind::normal)
-        keys.fail(base + "weighting", "mass weighting is for types fixed, logNormal and "
-                                      "rosinRammler");
+        keys.fail(base + "weighting", "mass weighting is for types fixed, logNormal, "
+                                      "rosinRammler and table");
     if (radius.weighting == SizeWeighting::mass &&
         radius.kind == RadiusDistributionKind::rosinRammler && !(radius.minimum > 0))
         keys.fail(base + "minimum", "a mass-weighted rosinRammler needs minimum > 0 (its number "
@@ -377,7 +384,8 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
             injector.injection.mode = *valueNamed(injectionModeNames(), keys.word(base + ".mode"));
             readRateAndCount(keys, base, injector);
             injector.radius = keys.has(base + ".radiusDistribution")
-                                  ? readRadiusDistribution(keys, base + ".radiusDistribution.")
+                                  ? readRadiusDistribution(keys, base + ".radiusDistribution.",
+                                                           scene.caseDirectory)
                                   : scene.particles.radius;
         }
         if (injector.model == InjectionModel::disc) {
@@ -715,7 +723,8 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     if (!withInjectors) keys.require("particles.count", "to inject on the nozzle");
     scene.particles.count = withInjectors ? 0 : keys.integer("particles.count");
     scene.particles.density = keys.scalar("particles.density");
-    scene.particles.radius = readRadiusDistribution(keys, "particles.radiusDistribution.");
+    scene.particles.radius =
+        readRadiusDistribution(keys, "particles.radiusDistribution.", caseDirectory);
     scene.particles.material = readMaterial(keys, "particles.material");
     scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
     if (withInjectors) {

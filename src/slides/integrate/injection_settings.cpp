@@ -17,7 +17,8 @@ double RadiusDistribution::meanRadius() const {
             weighting == SizeWeighting::mass ? median * std::exp(-3 * sigma * sigma) : median;
         return numberMedian * std::exp(0.5 * sigma * sigma);
     }
-    case RadiusDistributionKind::rosinRammler: return RadiusSampler(*this).meanRadius();
+    case RadiusDistributionKind::rosinRammler:
+    case RadiusDistributionKind::table: return RadiusSampler(*this).meanRadius();
     }
     return value;
 }

@@ -34,18 +34,19 @@
 
 namespace slides {
 
-enum class RadiusDistributionKind { fixed, normal, logNormal, rosinRammler };
+enum class RadiusDistributionKind { fixed, normal, logNormal, rosinRammler, table };
 
 struct RadiusDistributionName {
     RadiusDistributionKind value;
     std::string_view name;
 };
 
-constexpr std::array<RadiusDistributionName, 4> radiusDistributionNames() {
+constexpr std::array<RadiusDistributionName, 5> radiusDistributionNames() {
     return {{{RadiusDistributionKind::fixed, "fixed"},
              {RadiusDistributionKind::normal, "normal"},
              {RadiusDistributionKind::logNormal, "logNormal"},
-             {RadiusDistributionKind::rosinRammler, "rosinRammler"}}};
+             {RadiusDistributionKind::rosinRammler, "rosinRammler"},
+             {RadiusDistributionKind::table, "table"}}};
 }
 
 /// What a distribution's parameters describe: the number of particles of each size, or their
@@ -74,6 +75,9 @@ struct RadiusDistribution {
     double scale = 0;  ///< rosinRammler: r̄ of F(r) = 1 − exp(−(r/r̄)^n) [m]
     double spread = 0; ///< rosinRammler: n
     SizeWeighting weighting = SizeWeighting::number;
+    /// table: radii [m], ascending, and the cumulative fraction below each (0 … 1), linear
+    /// between them (the number, or with mass weighting the mass, uniform in r).
+    std::vector<double> tableRadius, tableCumulative;
     /// Expected value of the (untruncated) distribution [m]: the one "mean radius" of a run
     /// (its Stokes time, the scene analysis, the summary).
     double meanRadius() const;

@@ -1,95 +1,41 @@
 #include "slides/integrate/particle_file.h"
 
 #include "slides/core/error.h"
+#include "slides/integrate/csv_table.h"
 #include "slides/io/hdf5_file.h"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
-#include <cmath>
-#include <fstream>
-#include <optional>
-#include <sstream>
 #include <string>
 
 namespace slides {
 
 namespace {
 
-/// The fields of a line split at commas, spaces and tabs.
-std::vector<std::string> fieldsOf(const std::string& line) {
-    std::vector<std::string> fields;
-    std::string field;
-    for (const char c : line + ",") {
-        if (c == ',' || c == ' ' || c == '\t' || c == '\r') {
-            if (!field.empty()) fields.push_back(field);
-            field.clear();
-        } else {
-            field += c;
-        }
-    }
-    return fields;
-}
-
 std::vector<ParticleRow> readCsv(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path.string(), 0, "", "cannot read the particle file");
-    const std::array<std::string, 9> known{"x", "y", "z", "u", "v", "w", "d", "r", "t"};
-    std::array<std::optional<std::size_t>, 9> column;
-    std::vector<ParticleRow> rows;
-    std::string line;
-    int lineNumber = 0;
-    std::size_t width = 0;
-    const auto fail = [&](const std::string& key, const std::string& message) {
-        throw InputError(path.string(), lineNumber, key, message);
+    const CsvTable table = readCsvTable(path, {"x", "y", "z", "u", "v", "w", "d", "r", "t"});
+    for (const char* name : {"x", "y", "z", "u", "v", "w"})
+        if (!table.column(name))
+            table.fail(0, name, "missing column (the header needs x y z u v w, d or r)");
+    const auto diameter = table.column("d"), radius = table.column("r"), time = table.column("t");
+    if (diameter.has_value() == radius.has_value())
+        table.fail(0, "d", "give the diameter d or the radius r, one of them");
+    const auto at = [&](const std::vector<double>& row, const char* name) {
+        return row[*table.column(name)];
     };
-    while (std::getline(in, line)) {
-        ++lineNumber;
-        const auto fields = fieldsOf(line);
-        if (fields.empty() || fields[0].starts_with('#')) continue;
-        if (width == 0) { // the header
-            width = fields.size();
-            for (std::size_t c = 0; c < width; ++c) {
-                const auto at = std::find(known.begin(), known.end(), fields[c]);
-                if (at == known.end())
-                    fail(fields[c], "unknown column; columns are x y z u v w, d or r, t");
-                auto& slot = column[static_cast<std::size_t>(at - known.begin())];
-                if (slot) fail(fields[c], "column given twice");
-                slot = c;
-            }
-            for (const char* name : {"x", "y", "z", "u", "v", "w"})
-                if (!column[static_cast<std::size_t>(std::find(known.begin(), known.end(), name) -
-                                                     known.begin())])
-                    fail(name, "missing column (the header needs x y z u v w, d or r)");
-            if (column[6].has_value() == column[7].has_value())
-                fail("d", "give the diameter d or the radius r, one of them");
-            continue;
-        }
-        if (fields.size() != width)
-            fail("", std::to_string(fields.size()) + " values, the header names " +
-                         std::to_string(width) + " columns");
-        std::array<double, 9> value{};
-        for (std::size_t k = 0; k < known.size(); ++k) {
-            if (!column[k]) continue;
-            const std::string& text = fields[*column[k]];
-            const auto [end, error] =
-                std::from_chars(text.data(), text.data() + text.size(), value[k]);
-            if (error != std::errc() || end != text.data() + text.size() ||
-                !std::isfinite(value[k]))
-                fail(known[k], "expected a finite number, found '" + text + "'");
-        }
+    std::vector<ParticleRow> rows;
+    for (std::size_t k = 0; k < table.rows.size(); ++k) {
+        const std::vector<double>& values = table.rows[k];
         ParticleRow row;
-        row.position = Vec3(value[0], value[1], value[2]);
-        row.velocity = Vec3(value[3], value[4], value[5]);
-        row.radius = column[6] ? 0.5 * value[6] : value[7];
-        row.time = value[8];
-        if (!(row.radius > 0)) fail(column[6] ? "d" : "r", "must be a positive number");
-        if (row.time < 0) fail("t", "must not be negative");
+        row.position = Vec3(at(values, "x"), at(values, "y"), at(values, "z"));
+        row.velocity = Vec3(at(values, "u"), at(values, "v"), at(values, "w"));
+        row.radius = diameter ? 0.5 * values[*diameter] : values[*radius];
+        row.time = time ? values[*time] : 0.0;
+        if (!(row.radius > 0)) table.fail(k, diameter ? "d" : "r", "must be a positive number");
+        if (row.time < 0) table.fail(k, "t", "must not be negative");
         if (!rows.empty() && row.time < rows.back().time)
-            fail("t", "goes back in time: rows must be in order of injection time");
+            table.fail(k, "t", "goes back in time: rows must be in order of injection time");
         rows.push_back(row);
     }
-    if (rows.empty()) fail("", "no particle rows");
     return rows;
 }
 
