@@ -271,6 +271,21 @@ TEST(SeveralInjectors, BadInjectorsAreRefusedAtTheirKey) {
         << test::slurp(scratch.path / "log");
 }
 
+TEST(CheckOption, ReadsAndAnalysesTheCaseAndWritesNothing) {
+    test::ScratchDirectory scratch("inject-check");
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << sprayDictionary(twoGuns, 0);
+    ASSERT_EQ(test::runCli(scratch.path.string() + " --check", scratch.path / "log"), 0);
+    const std::string log = test::slurp(scratch.path / "log");
+    EXPECT_NE(log.find("decision (threshold 0.01)"), std::string::npos) << log;
+    EXPECT_NE(log.find("nothing written"), std::string::npos) << log;
+    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"));
+    // A bad case is refused as a run would refuse it.
+    std::ofstream(scratch.path / "constant" / "slidesProperties")
+        << sprayDictionary("injectors { a { count 10; } }", 0);
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --check", scratch.path / "log"), 2);
+    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"));
+}
+
 // ---- cone ----------------------------------------------------------------------------------
 
 /// The directions and speeds of 1e5 particles of a cone injector (no gas is sampled for them).

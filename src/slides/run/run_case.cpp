@@ -23,6 +23,10 @@ void runCase(const RunOptions& options) {
     const Scene& scene = resolved.scene;
     const CarrierField& carrier = *resolved.carrier;
     if (!options.quiet) describeRun(resolved, threads);
+    if (options.check) { // everything read and the analysis run; nothing is written
+        if (!options.quiet) std::printf("check: the case reads and resolves; nothing written\n");
+        return;
+    }
 
     const auto outputDirectory =
         options.output.empty() ? options.caseDirectory / "slides" : options.output;
