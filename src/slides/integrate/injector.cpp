@@ -2,6 +2,7 @@
 
 #include "slides/core/random.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -30,9 +31,11 @@ Injector::Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
                    const ParticleSettings& particles)
     : Injector(singleInjector(injection, nozzle, particles)) {}
 
-Injector::Injector(const InjectorSettings& settings)
+Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
     : settings_(settings), radius_(settings.radius),
-      startsAtGasVelocity_(settings.model == InjectionModel::disc) {}
+      startsAtGasVelocity_(settings.model == InjectionModel::disc),
+      avoidOverlap_(avoidOverlap && settings.model != InjectionModel::file &&
+                    settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
     const auto k = id - settings_.firstId;
@@ -51,7 +54,8 @@ long Injector::dueBefore(double until) const {
     return due;
 }
 
-void Injector::drawStart(ParticleId id, Vec3& position, Vec3& addedVelocity) const {
+void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
+                         Vec3& addedVelocity) const {
     const InjectorSettings& settings = settings_;
     if (settings.model == InjectionModel::file) {
         const ParticleRow& row = settings.rows[id - settings.firstId];
@@ -60,7 +64,7 @@ void Injector::drawStart(ParticleId id, Vec3& position, Vec3& addedVelocity) con
         return;
     }
     const InjectionSettings& injection = settings.injection;
-    RandomStream random(injection.seed, id, RandomPurpose::injection);
+    RandomStream random(injection.seed, id, RandomPurpose::injection, attempt);
     if (injection.mode == InjectionMode::lattice) {
         position = latticeSite(injection, id);
         const double spread = injection.latticeVelocitySpread;
@@ -89,6 +93,38 @@ void Injector::drawStart(ParticleId id, Vec3& position, Vec3& addedVelocity) con
                                           direction / (2.0 * std::numbers::pi));
 }
 
+void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud) {
+    positions_.resize(count);
+    addedVelocities_.resize(count);
+    if (!avoidOverlap_) {
+        for (std::size_t k = 0; k < count; ++k)
+            drawStart(first + k, 0, positions_[k], addedVelocities_[k]);
+        return;
+    }
+    constexpr std::uint32_t attempts = 64;
+    const double newest = *std::max_element(radii_.begin(), radii_.end());
+    const double largest = std::max(
+        newest,
+        cloud.radius.empty() ? 0.0 : *std::max_element(cloud.radius.begin(), cloud.radius.end()));
+    const Vec3& centre = settings_.nozzle.centre;
+    const double reach = settings_.nozzle.radius + newest + largest;
+    nearby_.clear();
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+        if ((cloud.position[i] - centre).squaredNorm() < reach * reach)
+            nearby_.emplace_back(cloud.position[i], cloud.radius[i]);
+    for (std::size_t k = 0; k < count; ++k) {
+        for (std::uint32_t attempt = 0; attempt < attempts; ++attempt) {
+            drawStart(first + k, attempt, positions_[k], addedVelocities_[k]);
+            const bool clear = std::none_of(nearby_.begin(), nearby_.end(), [&](const auto& other) {
+                const double contact = radii_[k] + other.second;
+                return (positions_[k] - other.first).squaredNorm() < contact * contact;
+            });
+            if (clear) break;
+        }
+        nearby_.emplace_back(positions_[k], radii_[k]);
+    }
+}
+
 void Injector::injectUntil(double until, double time, const CarrierField& carrier,
                            ParticleCloud& cloud) {
     const long first = injected_;
@@ -100,10 +136,12 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
 
     const auto count = static_cast<std::size_t>(last - first);
     const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
-    positions_.resize(count);
-    addedVelocities_.resize(count);
+    radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)
-        drawStart(firstId + k, positions_[k], addedVelocities_[k]);
+        radii_[k] = settings_.model == InjectionModel::file
+                        ? settings_.rows[firstId + k - settings_.firstId].radius
+                        : radius_.draw(settings_.injection.seed, firstId + k);
+    drawStarts(firstId, count, cloud);
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
     // step walks from there instead of searching again.
     if (carrier.keepsLocations()) {
@@ -119,10 +157,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         const ParticleId id = firstId + k;
         const Vec3 velocity = startsAtGasVelocity_ ? Vec3(gas_.velocity[k] + addedVelocities_[k])
                                                    : addedVelocities_[k];
-        const double radius = settings_.model == InjectionModel::file
-                                  ? settings_.rows[id - settings_.firstId].radius
-                                  : radius_.draw(settings_.injection.seed, id);
-        cloud.add(id, positions_[k], velocity, radius);
+        cloud.add(id, positions_[k], velocity, radii_[k]);
     }
     injected_ = last;
 }

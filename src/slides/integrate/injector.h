@@ -9,6 +9,13 @@
 //         axis: cos θ uniform in [cos θ_out, cos θ_in], azimuth uniform (Archimedes' hat-box);
 //   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time.
 //
+// With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
+// particle in flight or placed before it: the rule is that its start point is redrawn, from the
+// stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre lies
+// within the disc radius plus the two radii of the injector's centre; after 64 attempts (a disc
+// already full) it keeps the last draw. Without an overlap the first draw stands, as without
+// the rule. A file's rows and a lattice are placed as given.
+//
 // Particle firstId + k is injected at t_k = startTime + k / rate (or startTime; a file row's
 // time). Its radius, position and random velocity come from counter-based random streams keyed
 // by (seed, id), so they do not depend on the time step, the thread count or the other
@@ -39,7 +46,7 @@ public:
     /// Injects particles.count particles of particles.radius from the nozzle.
     Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
              const ParticleSettings& particles);
-    explicit Injector(const InjectorSettings& settings);
+    explicit Injector(const InjectorSettings& settings, bool avoidOverlap = false);
 
     /// Adds every particle due before `until` that is not yet in the cloud; the gas is
     /// sampled once for the whole batch.
@@ -61,15 +68,22 @@ public:
     const InjectorSettings& settings() const { return settings_; }
 
 private:
-    /// The start position and the velocity added to the gas velocity (random, or the given one).
-    void drawStart(ParticleId id, Vec3& position, Vec3& addedVelocity) const;
+    /// The start position and the velocity added to the gas velocity (random, or the given one),
+    /// from the draw `attempt` of particle id.
+    void drawStart(ParticleId id, std::uint32_t attempt, Vec3& position, Vec3& addedVelocity) const;
+    /// The starts of the new particles [first, first + count), each clear of the others near
+    /// the injector (avoidOverlap_) or the first draw.
+    void drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud);
 
     InjectorSettings settings_;
     RadiusSampler radius_;
     bool startsAtGasVelocity_; ///< disc: gas velocity + random; cone, file: the given velocity
+    bool avoidOverlap_;        ///< redraw a start that overlaps a particle near the injector
     long injected_ = 0;
     std::vector<Vec3> positions_;
     std::vector<Vec3> addedVelocities_;
+    std::vector<double> radii_;
+    std::vector<std::pair<Vec3, double>> nearby_; ///< centres and radii near the injector
     CarrierSample gas_;
 };
 

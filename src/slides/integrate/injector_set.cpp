@@ -6,8 +6,9 @@
 
 namespace slides {
 
-InjectorSet::InjectorSet(const std::vector<InjectorSettings>& injectors) {
-    for (const InjectorSettings& settings : injectors) injectors_.emplace_back(settings);
+InjectorSet::InjectorSet(const std::vector<InjectorSettings>& injectors, bool avoidOverlap) {
+    for (const InjectorSettings& settings : injectors)
+        injectors_.emplace_back(settings, avoidOverlap);
 }
 
 void InjectorSet::injectUntil(double until, double time, const CarrierField& carrier,

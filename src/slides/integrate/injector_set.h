@@ -13,7 +13,8 @@ namespace slides {
 
 class InjectorSet {
 public:
-    explicit InjectorSet(const std::vector<InjectorSettings>& injectors);
+    /// avoidOverlap: no particle placed overlapping one near its injector (collisions on).
+    explicit InjectorSet(const std::vector<InjectorSettings>& injectors, bool avoidOverlap = false);
 
     /// Adds every particle due before `until` of every injector, injector by injector.
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);

@@ -20,8 +20,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier)
                                scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
-      injectors_(injectorsOf(scene)), needs_(scene.physics.carrierNeeds()),
-      dispersion_(scene.physics, scene.injection.seed),
+      injectors_(injectorsOf(scene), scene.collisions.model != CollisionModel::none),
+      needs_(scene.physics.carrierNeeds()), dispersion_(scene.physics, scene.injection.seed),
       heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
       surfaces_(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
                 scene.physics.heatTransfer, carrier) {
