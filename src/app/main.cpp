@@ -5,6 +5,7 @@
 //     slides-track foamCases/impingingJet --time 500     # an OpenFOAM case, its time 500
 //     slides-track CASE --checkpoint-every 500     # after a crash: slides-track CASE --restart
 //     mpirun -np 4 slides-track CASE -parallel     # a decomposed case, one rank a processor*/
+//     slides-track CASE --check                    # read, analyse, print the decisions only
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
@@ -54,6 +55,8 @@ int main(int argc, char** argv) {
     app.add_flag("--quiet", options.quiet, "no progress display or report");
     app.add_flag("--parallel", options.parallel,
                  "-parallel under mpirun: the case's processor*/ decomposition, one part a rank");
+    app.add_flag("--check", options.check,
+                 "read the case and run the scene analysis, print its decisions; write nothing");
     app.add_flag("--list-keys", listKeys,
                  "print the table of slidesProperties keys (markdown) and exit");
     app.set_version_flag("--version", std::string("slides-track ") + SLIDES_VERSION);

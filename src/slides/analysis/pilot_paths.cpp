@@ -14,8 +14,23 @@ namespace {
 /// every surface a sink.
 Scene pilotScene(const Scene& scene, double dt) {
     Scene pilot = scene;
-    pilot.particles.count = std::min(scene.particles.count, pilotParticles);
     pilot.injection.mode = InjectionMode::allAtStart;
+    // Several injectors: an equal share of the pilot from each, its first particles (their ids
+    // and draws those of the run), all at the start.
+    const long share =
+        std::max(1L, pilotParticles / std::max(1L, static_cast<long>(scene.injectors.size())));
+    pilot.particles.count = 0;
+    for (InjectorSettings& injector : pilot.injectors) {
+        injector.count = std::min(injector.count, share);
+        injector.injection.mode = InjectionMode::allAtStart;
+        injector.startTime = 0;
+        if (injector.model == InjectionModel::file)
+            injector.rows.resize(static_cast<std::size_t>(injector.count));
+        for (ParticleRow& row : injector.rows) row.time = 0;
+        pilot.particles.count += injector.count;
+    }
+    if (pilot.injectors.empty())
+        pilot.particles.count = std::min(scene.particles.count, pilotParticles);
     for (const auto& row : physicsTermNames()) setTerm(pilot, row.value, false);
     pilot.physics.automaticTerms.clear();
     for (Surface& surface : pilot.surfaces) surface.interaction = SurfaceInteraction::absorb;

@@ -283,11 +283,16 @@ void PathEstimator::visitCloud(const PilotStep& step) {
     if (initialSpread_ == 0) {
         initialSpread_ = spread;
         initialSpeed_ = speed;
-        const double area = std::numbers::pi * std::pow(std::max(nozzle.radius, meanRadius), 2);
-        const double nozzleDensity =
-            scene_.injection.mode == InjectionMode::rate
-                ? scene_.injection.rate / (area * speed)
-                : static_cast<double>(scene_.particles.count) / (area * 2 * meanRadius);
+        // The densest injector's (each of `injectors {}` sprays through its own disc).
+        double nozzleDensity = 0;
+        for (const InjectorSettings& injector : injectorsOf(scene_)) {
+            const double radius = std::max(injector.nozzle.radius, meanRadius);
+            const double area = std::numbers::pi * std::pow(radius, 2);
+            nozzleDensity = std::max(nozzleDensity, injector.injection.mode == InjectionMode::rate
+                                                        ? injector.injection.rate / (area * speed)
+                                                        : static_cast<double>(injector.count) /
+                                                              (area * 2 * meanRadius));
+        }
         volumeFractionNozzle_ = std::min(nozzleDensity * particleVolume, 0.64);
     }
     const double volumeFraction = std::min(

@@ -32,6 +32,8 @@ struct Scene {
     CarrierSettings carrier;
     ParticleSettings particles;
     InjectionSettings injection;
+    /// The injectors of `injectors {}`; empty: the one of nozzle + injection (injectorsOf).
+    std::vector<InjectorSettings> injectors;
     PhysicsSettings physics;
     TimeSettings time;
     CollisionSettings collisions;
@@ -41,6 +43,24 @@ struct Scene {
     bool domainFromCarrier = false; ///< no domain given: the carrier's bounds (a mesh) set it
     OutputSettings output;
 };
+
+/// The run's injectors: those listed, or the one that nozzle + injection + particles describe.
+inline std::vector<InjectorSettings> injectorsOf(const Scene& scene) {
+    if (!scene.injectors.empty()) return scene.injectors;
+    return {singleInjector(scene.injection, scene.nozzle, scene.particles)};
+}
+
+/// The names and first particle ids of the injectors of `injectors {}` (empty without).
+inline std::vector<std::string> injectorNames(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const InjectorSettings& injector : scene.injectors) names.push_back(injector.name);
+    return names;
+}
+inline std::vector<std::uint64_t> injectorFirstIds(const Scene& scene) {
+    std::vector<std::uint64_t> firstIds;
+    for (const InjectorSettings& injector : scene.injectors) firstIds.push_back(injector.firstId);
+    return firstIds;
+}
 
 /// Whether the particles carry a spin ω (surfaces/surface_settings.h).
 inline bool tracksSpin(const Scene& scene) {

@@ -17,6 +17,36 @@ nlohmann::json material(const MaterialSettings& m) {
             {"surfaceEnergy", m.surfaceEnergy}};
 }
 
+nlohmann::json radiusDistribution(const RadiusDistribution& radius) {
+    return {{"type", nameOf(radiusDistributionNames(), radius.kind)},
+            {"weighting", nameOf(sizeWeightingNames(), radius.weighting)},
+            {"meanRadius", radius.meanRadius()},
+            {"minimum", radius.minimum},
+            {"maximum", std::isfinite(radius.maximum) ? nlohmann::json(radius.maximum) : nullptr}};
+}
+
+nlohmann::json injectorSettings(const InjectorSettings& injector) {
+    nlohmann::json entry = {{"model", nameOf(injectionModelNames(), injector.model)},
+                            {"firstId", injector.firstId},
+                            {"count", injector.count},
+                            {"startTime", injector.startTime},
+                            {"centre", vec(injector.nozzle.centre)},
+                            {"axis", vec(injector.nozzle.axis)},
+                            {"radius", injector.nozzle.radius}};
+    if (injector.model == InjectionModel::file) return entry;
+    entry["mode"] = nameOf(injectionModeNames(), injector.injection.mode);
+    entry["rate"] = injector.injection.rate;
+    entry["radiusDistribution"] = radiusDistribution(injector.radius);
+    if (injector.model == InjectionModel::disc)
+        entry["crossSpanSpeed"] = injector.injection.crossSpanSpeed;
+    if (injector.model == InjectionModel::cone)
+        entry["cone"] = {{"innerHalfAngle", injector.cone.innerHalfAngle},
+                         {"outerHalfAngle", injector.cone.outerHalfAngle},
+                         {"speed", injector.cone.speed},
+                         {"speedStandardDeviation", injector.cone.speedDeviation}};
+    return entry;
+}
+
 } // namespace
 
 nlohmann::json sceneSettings(const Scene& scene) {
@@ -55,6 +85,8 @@ nlohmann::json sceneSettings(const Scene& scene) {
                              {"rate", scene.injection.rate},
                              {"crossSpanSpeed", scene.injection.crossSpanSpeed},
                              {"seed", scene.injection.seed}};
+    for (const InjectorSettings& injector : scene.injectors)
+        settings["injectors"][injector.name] = injectorSettings(injector);
     settings["physics"] = {
         {"drag", nameOf(dragModelNames(), scene.physics.drag)},
         {"gravity", vec(scene.physics.gravity)},

@@ -13,6 +13,7 @@
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -125,7 +126,7 @@ std::vector<KeyDeclaration> declareKeys() {
          "Cross-span direction y of a planar jet; its part along the axis is removed."},
 
         {"particles", K::dictionary, "-", "", {}, R::any, "The particles."},
-        {"particles.count", K::integer, "-", "", {}, R::positive, "Number of particles; their arrays must fit in the machine's memory (run/run_limits.h)."},
+        {"particles.count", K::integer, "-", "-", {}, R::positive, "Number of particles; their arrays must fit in the machine's memory (run/run_limits.h). Required with injection; with injectors, their counts."},
         {"particles.density", K::scalar, "kg/m^3", "", {}, R::positive,
          "Particle material density ρp.", noMinimum, 1e5},
         {"particles.radiusDistribution", K::dictionary, "-", "", {}, R::any,
@@ -133,7 +134,7 @@ std::vector<KeyDeclaration> declareKeys() {
         {"particles.radiusDistribution.type", K::word, "-", "fixed",
          namesOf(radiusDistributionNames()), R::any,
          "fixed: value; normal: mean, standardDeviation; logNormal: median, "
-         "geometricStandardDeviation."},
+         "geometricStandardDeviation; rosinRammler: scale, spread; table: file."},
         {"particles.radiusDistribution.value", K::scalar, "m", "-", {}, R::positive,
          "Radius for type fixed.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.mean", K::scalar, "m", "-", {}, R::positive,
@@ -148,6 +149,20 @@ std::vector<KeyDeclaration> declareKeys() {
          "Draws below this are redrawn.", noMinimum, maximumRadius},
         {"particles.radiusDistribution.maximum", K::scalar, "m", "-", {}, R::positive,
          "Draws above this are redrawn (default: no limit).", noMinimum, maximumRadius},
+        {"particles.radiusDistribution.scale", K::scalar, "m", "-", {}, R::positive,
+         "r̄ of type rosinRammler, F(r) = 1 − exp(−(r/r̄)^n): 63.2 % of the number (or mass) "
+         "lies below it.", noMinimum, maximumRadius},
+        {"particles.radiusDistribution.spread", K::scalar, "-", "-", {}, R::positive,
+         "n of type rosinRammler (larger: narrower).", 0.1, 100},
+        {"particles.radiusDistribution.file", K::word, "-", "-", {}, R::any,
+         "Type table: a CSV with columns r (or d) [m] and F, the cumulative fraction below, "
+         "rising from 0 to 1, linear in r between rows (integrate/size_distribution.h). "
+         "Relative to the case directory."},
+        {"particles.radiusDistribution.weighting", K::word, "-", "number",
+         namesOf(sizeWeightingNames()), R::any,
+         "What the distribution's parameters describe: number (a draw per particle) or mass "
+         "(e.g. a mass-median radius; drawn as the number distribution f_m/r³; types fixed, "
+         "logNormal, rosinRammler, table; rosinRammler needs minimum > 0)."},
         {"particles.material", K::dictionary, "-", "-", {}, R::any,
          "Elastic and adhesive properties (Table 5.2), for collision and deposition models."},
         {"particles.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,
@@ -166,9 +181,9 @@ std::vector<KeyDeclaration> declareKeys() {
         {"particles.injectionTemperature", K::scalar, "K", "-", {}, R::positive,
          "Particle temperature at injection; default fluid.temperature."},
 
-        {"injection", K::dictionary, "-", "", {}, R::any,
+        {"injection", K::dictionary, "-", "-", {}, R::any,
          "Particles start on the nozzle disc with the local gas velocity plus a random "
-         "cross-span velocity."},
+         "cross-span velocity (required without injectors; with injectors only seed)."},
         {"injection.mode", K::word, "-", "rate", namesOf(injectionModeNames()), R::any,
          "rate: one particle every 1/rate seconds; allAtStart: all at t = 0; lattice: all at "
          "t = 0 on the sites of a simple cubic lattice (latticeCoeffs)."},
@@ -189,6 +204,51 @@ std::vector<KeyDeclaration> declareKeys() {
          "Sites per axis (n_x n_y n_z); particles.count must not exceed their product."},
         {"injection.latticeCoeffs.velocitySpread", K::scalar, "m/s", "0", {}, R::nonNegative,
          "Each velocity component gets a uniform random addition in [−spread, spread]."},
+
+        {"injectors", K::dictionary, "-", "-", {}, R::any,
+         "Several injectors instead of nozzle + injection (integrate/injection_settings.h); "
+         "particle ids in blocks, injector by injector in the order written."},
+        {"injectors.*", K::dictionary, "-", "-", {}, R::any, "One injector, named by its key."},
+        {"injectors.*.model", K::word, "-", "disc", namesOf(injectionModelNames()), R::any,
+         "disc: on the disc at the gas velocity plus crossSpanSpeed; cone: coneCoeffs' speed "
+         "along a direction uniform over the cone's band of directions; file: the rows of file."},
+        {"injectors.*.centre", K::vector, "m", "(0 0 0)", {}, R::any,
+         "Centre of the injector's disc (disc, cone)."},
+        {"injectors.*.axis", K::vector, "-", "(1 0 0)", {}, R::any,
+         "Its direction (normalised on reading)."},
+        {"injectors.*.radius", K::scalar, "m", "0", {}, R::nonNegative,
+         "Radius of its disc; 0: a point.", noMinimum, maximumRadius},
+        {"injectors.*.crossSpanDirection", K::vector, "-", "(0 1 0)", {}, R::any,
+         "A direction across the axis: the disc's azimuth 0 (its part along the axis removed)."},
+        {"injectors.*.count", K::integer, "-", "-", {}, R::positive,
+         "Particles it injects (disc, cone); or rate × duration."},
+        {"injectors.*.mode", K::word, "-", "rate", {"rate", "allAtStart"}, R::any,
+         "rate: one particle every 1/rate seconds from startTime; allAtStart: all at startTime."},
+        {"injectors.*.rate", K::scalar, "1/s", "-", {}, R::positive,
+         "Particles per second (mode rate); or count / duration."},
+        {"injectors.*.duration", K::scalar, "s", "-", {}, R::positive,
+         "How long it injects (mode rate), with count or rate."},
+        {"injectors.*.startTime", K::scalar, "s", "0", {}, R::nonNegative,
+         "When it starts; a file's row times are added to it."},
+        {"injectors.*.crossSpanSpeed", K::scalar, "m/s", "0", {}, R::nonNegative,
+         "Random velocity across the axis (model disc), as injection.crossSpanSpeed."},
+        {"injectors.*.coneCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Model cone (OpenFOAM's coneInjection): solid (innerHalfAngle 0) or hollow."},
+        {"injectors.*.coneCoeffs.innerHalfAngle", K::scalar, "deg", "0", {}, R::nonNegative,
+         "Smallest angle of a direction to the axis.", noMinimum, 180},
+        {"injectors.*.coneCoeffs.outerHalfAngle", K::scalar, "deg", "", {}, R::nonNegative,
+         "Largest angle of a direction to the axis.", noMinimum, 180},
+        {"injectors.*.coneCoeffs.speed", K::scalar, "m/s", "", {}, R::nonNegative,
+         "Mean speed.", noMinimum, maximumGasSpeed},
+        {"injectors.*.coneCoeffs.speedStandardDeviation", K::scalar, "m/s", "0", {},
+         R::nonNegative, "Standard deviation of a normally distributed speed; 0: fixed."},
+        {"injectors.*.file", K::word, "-", "-", {}, R::any,
+         "Model file: a CSV whose header names its columns (x y z u v w, d or r, optional t), "
+         "a particle a row in order of t (integrate/particle_file.h); or a previous run's "
+         "particles.h5 (its arrivals). Relative to the case directory."},
+        {"injectors.*.radiusDistribution", K::dictionary, "-", "-", {}, R::any,
+         "Its own radius distribution (disc, cone), with the keys of "
+         "particles.radiusDistribution; default that one."},
 
         {"physics", K::dictionary, "-", "-", {}, R::any, "Forces on the particles."},
         {"physics.drag", K::word, "-", "haiderLevenspiel", namesOf(dragModelNames()), R::any,
@@ -358,6 +418,19 @@ std::vector<KeyDeclaration> declareKeys() {
          "Also write every frame and the arrivals to particles.h5, indexed by particles.xmf."},
     };
     // clang-format on
+    // Each injector's radiusDistribution takes the keys of particles.radiusDistribution.
+    const std::string particleSizes = "particles.radiusDistribution.";
+    std::vector<KeyDeclaration> injectorSizes;
+    for (const KeyDeclaration& key : keys)
+        if (key.path.starts_with(particleSizes)) {
+            KeyDeclaration copy = key;
+            copy.path = "injectors.*.radiusDistribution." + key.path.substr(particleSizes.size());
+            injectorSizes.push_back(copy);
+        }
+    const auto after = std::find_if(keys.begin(), keys.end(), [](const KeyDeclaration& key) {
+        return key.path == "injectors.*.radiusDistribution";
+    });
+    keys.insert(after + 1, injectorSizes.begin(), injectorSizes.end());
     return keys;
 }
 

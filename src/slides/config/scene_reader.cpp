@@ -6,10 +6,13 @@
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
+#include "slides/integrate/particle_file.h"
+#include "slides/integrate/size_distribution.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -260,8 +263,10 @@ private:
     const Dictionary& top_;
 };
 
-RadiusDistribution readRadiusDistribution(const KeyReader& keys) {
-    const std::string base = "particles.radiusDistribution.";
+/// The radius distribution of the dictionary at base ("particles.radiusDistribution."); a
+/// table's file is relative to caseDirectory.
+RadiusDistribution readRadiusDistribution(const KeyReader& keys, const std::string& base,
+                                          const std::filesystem::path& caseDirectory) {
     RadiusDistribution radius;
     radius.kind = *valueNamed(radiusDistributionNames(), keys.word(base + "type"));
     radius.minimum = keys.scalar(base + "minimum");
@@ -274,6 +279,15 @@ RadiusDistribution readRadiusDistribution(const KeyReader& keys) {
         keys.require(base + "standardDeviation", "for type normal");
         radius.mean = keys.scalar(base + "mean");
         radius.standardDeviation = keys.scalar(base + "standardDeviation");
+    } else if (radius.kind == RadiusDistributionKind::table) {
+        keys.require(base + "file", "for type table");
+        const std::filesystem::path file = keys.word(base + "file");
+        readSizeTable(file.is_absolute() ? file : caseDirectory / file, radius);
+    } else if (radius.kind == RadiusDistributionKind::rosinRammler) {
+        keys.require(base + "scale", "for type rosinRammler");
+        keys.require(base + "spread", "for type rosinRammler");
+        radius.scale = keys.scalar(base + "scale");
+        radius.spread = keys.scalar(base + "spread");
     } else {
         keys.require(base + "median", "for type logNormal");
         keys.require(base + "geometricStandardDeviation", "for type logNormal");
@@ -282,11 +296,120 @@ RadiusDistribution readRadiusDistribution(const KeyReader& keys) {
     }
     if (!(radius.minimum < radius.maximum))
         keys.fail(base + "maximum", "must be larger than minimum");
+    radius.weighting = *valueNamed(sizeWeightingNames(), keys.word(base + "weighting"));
+    if (radius.weighting == SizeWeighting::mass && radius.kind == RadiusDistributionKind::normal)
+        keys.fail(base + "weighting", "mass weighting is for types fixed, logNormal, "
+                                      "rosinRammler and table");
+    if (radius.weighting == SizeWeighting::mass &&
+        radius.kind == RadiusDistributionKind::rosinRammler && !(radius.minimum > 0))
+        keys.fail(base + "minimum", "a mass-weighted rosinRammler needs minimum > 0 (its number "
+                                    "of particles grows without bound as r → 0)");
     const double typical = radius.meanRadius();
     if (!(typical > radius.minimum && typical < radius.maximum))
         keys.fail(base + "type", "the distribution's mean radius " + std::to_string(typical) +
                                      " m lies outside [minimum, maximum]");
     return radius;
+}
+
+/// A disc: centre, axis, radius and the cross-span direction of the dictionary at base.
+JetNozzle readDisc(const KeyReader& keys, const std::string& base) {
+    JetNozzle disc;
+    disc.centre = keys.vector(base + ".centre");
+    disc.axis = keys.direction(base + ".axis");
+    disc.radius = keys.scalar(base + ".radius");
+    const Vec3 crossSpan = keys.vector(base + ".crossSpanDirection");
+    const Vec3 perpendicular = crossSpan - crossSpan.dot(disc.axis) * disc.axis;
+    if (!(perpendicular.norm() > 1e-6 * crossSpan.norm()))
+        keys.fail(base + ".crossSpanDirection", "must not be parallel to " + base + ".axis");
+    disc.crossSpanDirection = perpendicular.normalized();
+    return disc;
+}
+
+/// How many particles an injector of mode rate gives and how fast: two of count, rate and
+/// duration.
+void readRateAndCount(const KeyReader& keys, const std::string& base, InjectorSettings& injector) {
+    const bool hasCount = keys.has(base + ".count");
+    const long count = hasCount ? keys.integer(base + ".count") : 0;
+    const auto rate = keys.optionalScalar(base + ".rate");
+    const auto duration = keys.optionalScalar(base + ".duration");
+    if (injector.injection.mode == InjectionMode::allAtStart) {
+        keys.require(base + ".count", "for mode allAtStart");
+        if (rate || duration)
+            keys.fail(base + (rate ? ".rate" : ".duration"), "mode allAtStart has no rate");
+        injector.count = count;
+        return;
+    }
+    if (int(hasCount) + int(rate.has_value()) + int(duration.has_value()) != 2)
+        keys.fail(base + ".count", "give two of count, rate and duration (mode rate)");
+    injector.injection.rate = rate ? *rate : static_cast<double>(count) / *duration;
+    const double total = hasCount ? static_cast<double>(count) : std::round(*rate * *duration);
+    if (!(total >= 1 && total <= 1e15))
+        keys.fail(base + ".duration",
+                  "gives " + std::to_string(total) + " particles: at least 1, at most 1e15");
+    injector.count = static_cast<long>(total);
+}
+
+/// The injectors of `injectors {}`, their ids in blocks in the order written.
+std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Dictionary& top,
+                                            const Scene& scene) {
+    for (const char* shorthand : {"mode", "rate", "crossSpanSpeed", "latticeCoeffs"})
+        if (keys.has(std::string("injection.") + shorthand))
+            keys.fail(std::string("injection.") + shorthand,
+                      "with injectors, injection gives only the seed");
+    if (keys.has("particles.count"))
+        keys.fail("particles.count", "with injectors, their counts give the number of particles");
+    const Dictionary& list = top.subDict("injectors");
+    if (list.keys().empty()) keys.fail("injectors", "no injector listed");
+    std::vector<InjectorSettings> injectors;
+    std::uint64_t firstId = 0;
+    for (const auto& name : list.keys()) {
+        const std::string base = "injectors." + name;
+        InjectorSettings injector;
+        injector.name = name;
+        injector.model = *valueNamed(injectionModelNames(), keys.word(base + ".model"));
+        injector.firstId = firstId;
+        injector.startTime = keys.scalar(base + ".startTime");
+        injector.injection.seed = scene.injection.seed;
+        injector.nozzle = readDisc(keys, base);
+        if (injector.model == InjectionModel::file) {
+            keys.require(base + ".file", "for model file");
+            for (const char* given : {"count", "rate", "duration", "radiusDistribution"})
+                if (keys.has(base + "." + given))
+                    keys.fail(base + "." + given, "a file injector's particles are its rows");
+            const std::filesystem::path file = keys.word(base + ".file");
+            injector.rows =
+                readParticleFile(file.is_absolute() ? file : scene.caseDirectory / file);
+            injector.count = static_cast<long>(injector.rows.size());
+        } else {
+            injector.injection.mode = *valueNamed(injectionModeNames(), keys.word(base + ".mode"));
+            readRateAndCount(keys, base, injector);
+            injector.radius = keys.has(base + ".radiusDistribution")
+                                  ? readRadiusDistribution(keys, base + ".radiusDistribution.",
+                                                           scene.caseDirectory)
+                                  : scene.particles.radius;
+        }
+        if (injector.model == InjectionModel::disc) {
+            injector.injection.crossSpanSpeed = keys.scalar(base + ".crossSpanSpeed");
+        } else if (keys.has(base + ".crossSpanSpeed")) {
+            keys.fail(base + ".crossSpanSpeed", "only model disc adds a cross-span speed");
+        }
+        if (injector.model == InjectionModel::cone) {
+            const std::string cone = base + ".coneCoeffs";
+            keys.require(cone, "for model cone");
+            constexpr double radiansPerDegree = std::numbers::pi / 180;
+            injector.cone.innerHalfAngle = radiansPerDegree * keys.scalar(cone + ".innerHalfAngle");
+            injector.cone.outerHalfAngle = radiansPerDegree * keys.scalar(cone + ".outerHalfAngle");
+            injector.cone.speed = keys.scalar(cone + ".speed");
+            injector.cone.speedDeviation = keys.scalar(cone + ".speedStandardDeviation");
+            if (!(injector.cone.outerHalfAngle > injector.cone.innerHalfAngle))
+                keys.fail(cone + ".outerHalfAngle", "must be larger than innerHalfAngle");
+        } else if (keys.has(base + ".coneCoeffs")) {
+            keys.fail(base + ".coneCoeffs", "only model cone takes coneCoeffs");
+        }
+        firstId += static_cast<std::uint64_t>(injector.count);
+        injectors.push_back(std::move(injector));
+    }
+    return injectors;
 }
 
 MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
@@ -558,6 +681,7 @@ void readDomain(const KeyReader& keys, Scene& scene) {
     scene.domain.max = keys.vector("domain.max");
     if (!(scene.domain.min.array() < scene.domain.max.array()).all())
         keys.fail("domain.max", "must exceed domain.min in every component");
+    if (!scene.injectors.empty() && !keys.has("nozzle")) return; // each injector is checked
     const Vec3& nozzle = scene.nozzle.centre;
     if (!((nozzle.array() > scene.domain.min.array()).all() &&
           (nozzle.array() < scene.domain.max.array()).all()))
@@ -585,31 +709,39 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     }
     scene.fluid.temperature = keys.scalar("fluid.temperature");
 
-    if (withGas || keys.word("injection.mode") != "lattice") {
+    // With injectors, the nozzle is the analytic jet's only (a mesh or no gas needs none).
+    const bool withInjectors = keys.has("injectors");
+    const bool analyticGas = withGas && keys.word("carrier.type") != "foamField";
+    if (withInjectors ? analyticGas || keys.has("nozzle")
+                      : withGas || keys.word("injection.mode") != "lattice") {
         keys.require("nozzle.radius", withGas ? "for a carrier gas" : "to inject on the nozzle");
-        scene.nozzle.centre = keys.vector("nozzle.centre");
-        scene.nozzle.axis = keys.direction("nozzle.axis");
-        scene.nozzle.radius = keys.scalar("nozzle.radius");
-        const Vec3 crossSpan = keys.vector("nozzle.crossSpanDirection");
-        const Vec3 perpendicular = crossSpan - crossSpan.dot(scene.nozzle.axis) * scene.nozzle.axis;
-        if (!(perpendicular.norm() > 1e-6 * crossSpan.norm()))
-            keys.fail("nozzle.crossSpanDirection", "must not be parallel to nozzle.axis");
-        scene.nozzle.crossSpanDirection = perpendicular.normalized();
+        scene.nozzle = readDisc(keys, "nozzle");
     }
 
     scene.carrier = readCarrier(keys, scene.fluid);
 
-    scene.particles.count = keys.integer("particles.count");
+    if (!withInjectors) keys.require("particles.count", "to inject on the nozzle");
+    scene.particles.count = withInjectors ? 0 : keys.integer("particles.count");
     scene.particles.density = keys.scalar("particles.density");
-    scene.particles.radius = readRadiusDistribution(keys);
+    scene.particles.radius =
+        readRadiusDistribution(keys, "particles.radiusDistribution.", caseDirectory);
     scene.particles.material = readMaterial(keys, "particles.material");
+    scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
+    if (withInjectors) {
+        scene.injectors = readInjectors(keys, dictionary, scene);
+        for (const InjectorSettings& injector : scene.injectors)
+            scene.particles.count += injector.count;
+        if (!keys.has("nozzle")) scene.nozzle = scene.injectors.front().nozzle;
+    } else {
+        keys.require("injection", "without injectors");
+    }
 
     scene.injection.mode = *valueNamed(injectionModeNames(), keys.word("injection.mode"));
-    if (scene.injection.mode == InjectionMode::rate) {
+    if (!withInjectors && scene.injection.mode == InjectionMode::rate) {
         keys.require("injection.rate", "for injection mode rate");
         scene.injection.rate = keys.scalar("injection.rate");
     }
-    if (scene.injection.mode == InjectionMode::lattice) {
+    if (!withInjectors && scene.injection.mode == InjectionMode::lattice) {
         const std::string lattice = "injection.latticeCoeffs";
         keys.require(lattice, "for injection mode lattice");
         scene.injection.latticeOrigin = keys.vector(lattice + ".origin");
@@ -622,7 +754,6 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
             keys.fail(lattice + ".sites", "hold fewer sites than particles.count");
     }
     scene.injection.crossSpanSpeed = keys.scalar("injection.crossSpanSpeed");
-    scene.injection.seed = static_cast<std::uint64_t>(keys.integer("injection.seed"));
 
     scene.physics.drag = *valueNamed(dragModelNames(), keys.word("physics.drag"));
     scene.physics.gravity = keys.vector("physics.gravity");

@@ -8,30 +8,59 @@
 //               // or: mode lattice; latticeCoeffs { origin (0 0 0); spacing 1e-4;
 //               //                                   sites (10 10 10); velocitySpread 0.1; }
 //
-// How to add a mode or distribution: an enumerator, its name in its table below, its key rows
-// in config/scene_keys.cpp and its case in integrate/injector.cpp.
+//     injectors                    // several injectors instead of nozzle + injection
+//     {
+//         gunA { model disc; centre (0 0 0); axis (1 0 0); radius 2e-3; count 4000; rate 8e4; }
+//         gunB { model cone; centre (0 0.02 0); axis (1 -0.2 0); count 2000; rate 4e4;
+//                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
+//         rows { model file; file "constant/particles.csv"; }
+//     }
+//
+// How to add a mode, model or distribution: an enumerator, its name in its table below, its key
+// rows in config/scene_keys.cpp and its case in integrate/injector.cpp (radii:
+// integrate/size_distribution.cpp).
 #pragma once
 
+#include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
 #include "slides/physics/contact_pair.h"
 
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace slides {
 
-enum class RadiusDistributionKind { fixed, normal, logNormal };
+enum class RadiusDistributionKind { fixed, normal, logNormal, rosinRammler, table };
 
 struct RadiusDistributionName {
     RadiusDistributionKind value;
     std::string_view name;
 };
 
-constexpr std::array<RadiusDistributionName, 3> radiusDistributionNames() {
+constexpr std::array<RadiusDistributionName, 5> radiusDistributionNames() {
     return {{{RadiusDistributionKind::fixed, "fixed"},
              {RadiusDistributionKind::normal, "normal"},
-             {RadiusDistributionKind::logNormal, "logNormal"}}};
+             {RadiusDistributionKind::logNormal, "logNormal"},
+             {RadiusDistributionKind::rosinRammler, "rosinRammler"},
+             {RadiusDistributionKind::table, "table"}}};
+}
+
+/// What a distribution's parameters describe: the number of particles of each size, or their
+/// mass (users quote mass-median diameters). Particles are always drawn one by one, so a mass
+/// distribution is sampled as the number distribution it implies, f_n(r) ∝ f_m(r)/r³.
+enum class SizeWeighting { number, mass };
+
+struct SizeWeightingName {
+    SizeWeighting value;
+    std::string_view name;
+};
+
+constexpr std::array<SizeWeightingName, 2> sizeWeightingNames() {
+    return {{{SizeWeighting::number, "number"}, {SizeWeighting::mass, "mass"}}};
 }
 
 struct RadiusDistribution {
@@ -43,6 +72,12 @@ struct RadiusDistribution {
     double geometricStandardDeviation = 1; ///< logNormal: e^σ of ln R (≥ 1)
     double minimum = 0;                    ///< draws below are redrawn [m]
     double maximum = 0;                    ///< draws above are redrawn [m]
+    double scale = 0;  ///< rosinRammler: r̄ of F(r) = 1 − exp(−(r/r̄)^n) [m]
+    double spread = 0; ///< rosinRammler: n
+    SizeWeighting weighting = SizeWeighting::number;
+    /// table: radii [m], ascending, and the cumulative fraction below each (0 … 1), linear
+    /// between them (the number, or with mass weighting the mass, uniform in r).
+    std::vector<double> tableRadius, tableCumulative;
     /// Expected value of the (untruncated) distribution [m]: the one "mean radius" of a run
     /// (its Stokes time, the scene analysis, the summary).
     double meanRadius() const;
@@ -82,5 +117,58 @@ struct InjectionSettings {
     std::array<int, 3> latticeSites{}; ///< per axis
     double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
 };
+
+enum class InjectionModel { disc, cone, file };
+
+struct InjectionModelName {
+    InjectionModel value;
+    std::string_view name;
+};
+
+constexpr std::array<InjectionModelName, 3> injectionModelNames() {
+    return {{{InjectionModel::disc, "disc"},
+             {InjectionModel::cone, "cone"},
+             {InjectionModel::file, "file"}}};
+}
+
+/// A cone of directions about the injector's axis: polar angle θ between inner and outer half
+/// angle, uniform over that band of the unit sphere (solid: inner 0; hollow: inner > 0).
+struct ConeSettings {
+    double innerHalfAngle = 0; ///< [rad]
+    double outerHalfAngle = 0; ///< [rad]
+    double speed = 0;          ///< mean speed along the drawn direction [m/s]
+    double speedDeviation = 0; ///< standard deviation of a normal speed [m/s]; 0: fixed
+};
+
+/// One particle given by a row of a file (integrate/particle_file.h).
+struct ParticleRow {
+    Vec3 position = Vec3::Zero(); ///< [m]
+    Vec3 velocity = Vec3::Zero(); ///< [m/s]
+    double radius = 0;            ///< [m]
+    double time = 0;              ///< injection time after the injector's start [s]
+};
+
+/// One injector: where, how many, when, which sizes and with which velocity its particles
+/// start. Its particles take the ids firstId … firstId + count − 1 (injector-major blocks, in
+/// the order the injectors are written), so ids stay unique and deterministic.
+struct InjectorSettings {
+    std::string name; ///< its key in `injectors {}`; "nozzle" for the nozzle + injection form
+    InjectionModel model = InjectionModel::disc;
+    JetNozzle nozzle;            ///< position (centre), direction (axis), disc radius
+    InjectionSettings injection; ///< mode, rate, cross-span speed, seed, lattice
+    long count = 0;
+    std::uint64_t firstId = 0;
+    RadiusDistribution radius;
+    double startTime = 0; ///< [s], the first particle's injection time
+    ConeSettings cone;
+    std::vector<ParticleRow> rows; ///< model file: the particles, in order of injection time
+};
+
+/// The index of the injector whose id block holds id, from the blocks' first ids (ascending).
+std::int32_t injectorOfId(const std::vector<std::uint64_t>& firstIds, std::uint64_t id);
+
+/// The one injector that `nozzle` + `injection` + `particles` describe.
+InjectorSettings singleInjector(const InjectionSettings& injection, const JetNozzle& nozzle,
+                                const ParticleSettings& particles);
 
 } // namespace slides

@@ -2,25 +2,11 @@
 
 #include "slides/core/random.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace slides {
-
-double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, ParticleId id) {
-    if (distribution.kind == RadiusDistributionKind::fixed) return distribution.value;
-    RandomStream random(seed, id, RandomPurpose::radius);
-    const double sigma = std::log(distribution.geometricStandardDeviation);
-    // The reader guarantees the mean lies inside [minimum, maximum], so redraws terminate.
-    while (true) {
-        const double deviate = random.normal();
-        const double radius = distribution.kind == RadiusDistributionKind::normal
-                                  ? distribution.mean + distribution.standardDeviation * deviate
-                                  : distribution.median * std::exp(sigma * deviate);
-        if (radius > distribution.minimum && radius < distribution.maximum && radius > 0)
-            return radius;
-    }
-}
 
 Vec3 latticeSite(const InjectionSettings& injection, ParticleId id) {
     const auto& sites = injection.latticeSites;
@@ -30,61 +16,148 @@ Vec3 latticeSite(const InjectionSettings& injection, ParticleId id) {
     return injection.latticeOrigin + injection.latticeSpacing * (cell.array() + 0.5).matrix();
 }
 
+Vec3 coneDirection(const ConeSettings& cone, const Vec3& axis, const Vec3& across,
+                   double uniformPolar, double uniformAzimuth) {
+    // Uniform on the band of the sphere: its area element is d(cos θ) dφ.
+    const double cosInner = std::cos(cone.innerHalfAngle), cosOuter = std::cos(cone.outerHalfAngle);
+    const double cosPolar = cosOuter + uniformPolar * (cosInner - cosOuter);
+    const double sinPolar = std::sqrt(std::max(0.0, 1 - cosPolar * cosPolar));
+    const double azimuth = 2.0 * std::numbers::pi * uniformAzimuth;
+    const Vec3 other = axis.cross(across);
+    return cosPolar * axis + sinPolar * (std::cos(azimuth) * across + std::sin(azimuth) * other);
+}
+
 Injector::Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
                    const ParticleSettings& particles)
-    : injection_(injection), nozzle_(nozzle), count_(particles.count), radius_(particles.radius) {}
+    : Injector(singleInjector(injection, nozzle, particles)) {}
+
+Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
+    : settings_(settings), radius_(settings.radius),
+      startsAtGasVelocity_(settings.model == InjectionModel::disc),
+      avoidOverlap_(avoidOverlap && settings.model != InjectionModel::file &&
+                    settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
-    return injection_.mode == InjectionMode::rate ? static_cast<double>(id) / injection_.rate : 0.0;
+    const auto k = id - settings_.firstId;
+    const double start = settings_.startTime;
+    if (settings_.model == InjectionModel::file) return start + settings_.rows[k].time;
+    return settings_.injection.mode == InjectionMode::rate
+               ? start + static_cast<double>(k) / settings_.injection.rate
+               : start;
+}
+
+long Injector::dueBefore(double until) const {
+    long due = 0;
+    while (due < settings_.count &&
+           injectionTime(settings_.firstId + static_cast<ParticleId>(due)) < until)
+        ++due;
+    return due;
+}
+
+void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
+                         Vec3& addedVelocity) const {
+    const InjectorSettings& settings = settings_;
+    if (settings.model == InjectionModel::file) {
+        const ParticleRow& row = settings.rows[id - settings.firstId];
+        position = row.position;
+        addedVelocity = row.velocity;
+        return;
+    }
+    const InjectionSettings& injection = settings.injection;
+    RandomStream random(injection.seed, id, RandomPurpose::injection, attempt);
+    if (injection.mode == InjectionMode::lattice) {
+        position = latticeSite(injection, id);
+        const double spread = injection.latticeVelocitySpread;
+        for (int axis = 0; axis < 3; ++axis)
+            addedVelocity[axis] = spread * (2 * random.uniform() - 1);
+        return;
+    }
+    const JetNozzle& nozzle = settings.nozzle;
+    const Vec3 across = nozzle.crossSpanDirection;
+    const Vec3 other = nozzle.axis.cross(across);
+    const double radialFraction = std::sqrt(random.uniform()); // uniform in disc area
+    const double angle = 2.0 * std::numbers::pi * random.uniform();
+    const double direction = 2.0 * std::numbers::pi * random.uniform();
+    position = nozzle.centre + nozzle.radius * radialFraction *
+                                   (std::cos(angle) * across + std::sin(angle) * other);
+    if (settings.model == InjectionModel::disc) {
+        addedVelocity =
+            injection.crossSpanSpeed * (std::cos(direction) * across + std::sin(direction) * other);
+        return;
+    }
+    // Cone: the polar angle from a fresh uniform, the azimuth from `direction`'s.
+    const ConeSettings& cone = settings.cone;
+    const double polar = random.uniform();
+    const double speed = cone.speed + cone.speedDeviation * random.normal();
+    addedVelocity = speed * coneDirection(cone, nozzle.axis, across, polar,
+                                          direction / (2.0 * std::numbers::pi));
+}
+
+void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud) {
+    positions_.resize(count);
+    addedVelocities_.resize(count);
+    if (!avoidOverlap_) {
+        for (std::size_t k = 0; k < count; ++k)
+            drawStart(first + k, 0, positions_[k], addedVelocities_[k]);
+        return;
+    }
+    constexpr std::uint32_t attempts = 64;
+    const double newest = *std::max_element(radii_.begin(), radii_.end());
+    const double largest = std::max(
+        newest,
+        cloud.radius.empty() ? 0.0 : *std::max_element(cloud.radius.begin(), cloud.radius.end()));
+    const Vec3& centre = settings_.nozzle.centre;
+    const double reach = settings_.nozzle.radius + newest + largest;
+    nearby_.clear();
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+        if ((cloud.position[i] - centre).squaredNorm() < reach * reach)
+            nearby_.emplace_back(cloud.position[i], cloud.radius[i]);
+    for (std::size_t k = 0; k < count; ++k) {
+        for (std::uint32_t attempt = 0; attempt < attempts; ++attempt) {
+            drawStart(first + k, attempt, positions_[k], addedVelocities_[k]);
+            const bool clear = std::none_of(nearby_.begin(), nearby_.end(), [&](const auto& other) {
+                const double contact = radii_[k] + other.second;
+                return (positions_[k] - other.first).squaredNorm() < contact * contact;
+            });
+            if (clear) break;
+        }
+        nearby_.emplace_back(positions_[k], radii_[k]);
+    }
 }
 
 void Injector::injectUntil(double until, double time, const CarrierField& carrier,
                            ParticleCloud& cloud) {
     const long first = injected_;
     long last = first;
-    while (last < count_ && injectionTime(static_cast<ParticleId>(last)) < until) ++last;
+    while (last < settings_.count &&
+           injectionTime(settings_.firstId + static_cast<ParticleId>(last)) < until)
+        ++last;
     if (last == first) return;
 
-    const JetNozzle& nozzle = nozzle_;
-    const Vec3 across = nozzle.crossSpanDirection;
-    const Vec3 other = nozzle.axis.cross(across);
     const auto count = static_cast<std::size_t>(last - first);
-    positions_.resize(count);
-    randomVelocities_.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        const auto id = static_cast<ParticleId>(first) + k;
-        RandomStream random(injection_.seed, id, RandomPurpose::injection);
-        if (injection_.mode == InjectionMode::lattice) {
-            positions_[k] = latticeSite(injection_, id);
-            const double spread = injection_.latticeVelocitySpread;
-            for (int axis = 0; axis < 3; ++axis)
-                randomVelocities_[k][axis] = spread * (2 * random.uniform() - 1);
-            continue;
-        }
-        const double radialFraction = std::sqrt(random.uniform()); // uniform in disc area
-        const double angle = 2.0 * std::numbers::pi * random.uniform();
-        const double direction = 2.0 * std::numbers::pi * random.uniform();
-        positions_[k] = nozzle.centre + nozzle.radius * radialFraction *
-                                            (std::cos(angle) * across + std::sin(angle) * other);
-        randomVelocities_[k] = injection_.crossSpanSpeed *
-                               (std::cos(direction) * across + std::sin(direction) * other);
-    }
+    const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
+    radii_.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+        radii_[k] = settings_.model == InjectionModel::file
+                        ? settings_.rows[firstId + k - settings_.firstId].radius
+                        : radius_.draw(settings_.injection.seed, firstId + k);
+    drawStarts(firstId, count, cloud);
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
     // step walks from there instead of searching again.
-    const bool keepsLocations = carrier.keepsLocations();
-    if (keepsLocations) {
+    if (carrier.keepsLocations()) {
         cloud.carrierLocation.resize(cloud.size(), -1);
         cloud.carrierLocation.resize(cloud.size() + count, -1);
         carrier.sampleFrom(positions_,
                            std::span(cloud.carrierLocation).subspan(cloud.size(), count), time,
                            CarrierNeeds{}, gas_);
-    } else {
+    } else if (startsAtGasVelocity_) {
         carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     }
     for (std::size_t k = 0; k < count; ++k) {
-        const auto id = static_cast<ParticleId>(first) + k;
-        cloud.add(id, positions_[k], gas_.velocity[k] + randomVelocities_[k],
-                  drawRadius(radius_, injection_.seed, id));
+        const ParticleId id = firstId + k;
+        const Vec3 velocity = startsAtGasVelocity_ ? Vec3(gas_.velocity[k] + addedVelocities_[k])
+                                                   : addedVelocities_[k];
+        cloud.add(id, positions_[k], velocity, radii_[k]);
     }
     injected_ = last;
 }

@@ -1,13 +1,26 @@
-// Injector: puts particles on the nozzle disc with the local gas velocity plus a random
-// cross-span velocity, at a given rate or all at the start; or, in mode lattice, all at the
-// start on the sites of a simple cubic lattice, with the gas velocity plus a random one uniform
-// in [−spread, spread] per component.
+// Injector: one source of particles (integrate/injection_settings.h InjectorSettings), by its
+// model:
+//   disc  on the nozzle disc (uniform in area) with the local gas velocity plus a random
+//         cross-span velocity, at a given rate or all at the start; or, in mode lattice, all at
+//         the start on the sites of a simple cubic lattice, with the gas velocity plus a random
+//         one uniform in [−spread, spread] per component;
+//   cone  on the disc (or its centre, radius 0) with speed s along a direction drawn uniformly
+//         over the band of the unit sphere between the inner and outer half-angle about the
+//         axis: cos θ uniform in [cos θ_out, cos θ_in], azimuth uniform (Archimedes' hat-box);
+//   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time.
 //
-// Particle k (id k) is injected at t_k = k / rate (or t = 0). Its radius, position on the disc
-// (uniform in area) and cross-span direction come from counter-based random streams keyed by
-// (seed, k), so they do not depend on the time step, the thread count or the other particles.
-// A particle due within a step is added at the start of that step, on the nozzle, and the
-// stepper advances it over the rest of the step only (run/stepper.h).
+// With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
+// particle in flight or placed before it: the rule is that its start point is redrawn, from the
+// stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre lies
+// within the disc radius plus the two radii of the injector's centre; after 64 attempts (a disc
+// already full) it keeps the last draw. Without an overlap the first draw stands, as without
+// the rule. A file's rows and a lattice are placed as given.
+//
+// Particle firstId + k is injected at t_k = startTime + k / rate (or startTime; a file row's
+// time). Its radius, position and random velocity come from counter-based random streams keyed
+// by (seed, id), so they do not depend on the time step, the thread count or the other
+// particles. A particle due within a step is added at the start of that step, at its start
+// point, and the stepper advances it over the rest of the step only (run/stepper.h).
 //
 //     injection { mode rate; rate 2e5; crossSpanSpeed 0.5; seed 1; }
 #pragma once
@@ -16,40 +29,61 @@
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injection_settings.h"
+#include "slides/integrate/size_distribution.h"
 
 namespace slides {
 
 /// Where particle id starts in injection mode lattice: its site's centre.
 Vec3 latticeSite(const InjectionSettings& injection, ParticleId id);
 
-/// A radius drawn from the distribution for particle id (truncated by redrawing).
-double drawRadius(const RadiusDistribution& distribution, std::uint64_t seed, ParticleId id);
+/// A direction drawn uniformly over the cone's band of the unit sphere about axis (unit), from
+/// two uniforms on (0, 1); across is a unit vector ⟂ axis.
+Vec3 coneDirection(const ConeSettings& cone, const Vec3& axis, const Vec3& across,
+                   double uniformPolar, double uniformAzimuth);
 
 class Injector {
 public:
     /// Injects particles.count particles of particles.radius from the nozzle.
     Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
              const ParticleSettings& particles);
+    explicit Injector(const InjectorSettings& settings, bool avoidOverlap = false);
 
     /// Adds every particle due before `until` that is not yet in the cloud; the gas is
     /// sampled once for the whole batch.
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);
 
     long injected() const { return injected_; }
-    /// Continues as if particles 0 … injected − 1 had been injected (restart).
+    /// Continues as if its first `injected` particles had been injected (restart).
     void resumeAfter(long injected) { injected_ = injected; }
-    bool finished() const { return injected_ == count_; }
-    /// Time at which particle id enters [s].
+    bool finished() const { return injected_ == settings_.count; }
+    /// Its particles due before `until` (those in the cloud after injectUntil(until)).
+    long dueBefore(double until) const;
+    /// Time at which particle id (one of this injector's) enters [s].
     double injectionTime(ParticleId id) const;
+    /// Whether particle id is one of this injector's.
+    bool owns(ParticleId id) const {
+        return id >= settings_.firstId &&
+               id - settings_.firstId < static_cast<ParticleId>(settings_.count);
+    }
+    const InjectorSettings& settings() const { return settings_; }
 
 private:
-    InjectionSettings injection_;
-    JetNozzle nozzle_;
-    long count_;
-    RadiusDistribution radius_;
+    /// The start position and the velocity added to the gas velocity (random, or the given one),
+    /// from the draw `attempt` of particle id.
+    void drawStart(ParticleId id, std::uint32_t attempt, Vec3& position, Vec3& addedVelocity) const;
+    /// The starts of the new particles [first, first + count), each clear of the others near
+    /// the injector (avoidOverlap_) or the first draw.
+    void drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud);
+
+    InjectorSettings settings_;
+    RadiusSampler radius_;
+    bool startsAtGasVelocity_; ///< disc: gas velocity + random; cone, file: the given velocity
+    bool avoidOverlap_;        ///< redraw a start that overlaps a particle near the injector
     long injected_ = 0;
     std::vector<Vec3> positions_;
-    std::vector<Vec3> randomVelocities_; ///< the random part of each start velocity
+    std::vector<Vec3> addedVelocities_;
+    std::vector<double> radii_;
+    std::vector<std::pair<Vec3, double>> nearby_; ///< centres and radii near the injector
     CarrierSample gas_;
 };
 

@@ -1,6 +1,7 @@
 #include "slides/io/run_output.h"
 
 #include "slides/core/error.h"
+#include "slides/integrate/injection_settings.h"
 #include "slides/io/atomic_file.h"
 #include "slides/io/checkpoint.h"
 #include "slides/io/vtk_carrier_grid.h"
@@ -58,7 +59,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
     : directory_(
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
       carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
-      fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin) {
+      fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin),
+      injectorFirstIds_(settings.injectorFirstIds) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -109,6 +111,12 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
     ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
     if (heating_) frame.temperature = temperatures_;
     if (spinning_) frame.angularVelocity = spins_;
+    if (!injectorFirstIds_.empty()) {
+        injectors_.resize(ids_.size());
+        for (std::size_t i = 0; i < ids_.size(); ++i)
+            injectors_[i] = injectorOfId(injectorFirstIds_, ids_[i]);
+        frame.injector = injectors_;
+    }
     writeParticlesVtp(directory_ / name, frame);
     const double time = snapshot.counters.time;
     if (hdf5_) hdf5_->writeFrame(time, frame);

@@ -32,6 +32,8 @@ struct RunOutputSettings {
     std::filesystem::path caseDirectory; ///< named in particles.h5
     bool temperature = false;            ///< particles carry a temperature (heat transfer)
     bool spin = false;                   ///< particles carry a spin ω
+    /// The first particle id of each injector of `injectors {}`; empty: no injector array.
+    std::vector<std::uint64_t> injectorFirstIds;
 };
 
 class RunOutput {
@@ -72,6 +74,8 @@ private:
     bool spinning_;                    ///< particles carry a spin ω
     std::vector<double> temperatures_; ///< [K], with heat transfer
     std::vector<Vec3> spins_;          ///< ω [rad/s], with spin
+    std::vector<std::uint64_t> injectorFirstIds_;
+    std::vector<std::int32_t> injectors_; ///< each particle's injector, with several
 };
 
 } // namespace slides

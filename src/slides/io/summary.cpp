@@ -1,5 +1,6 @@
 #include "slides/io/summary.h"
 
+#include "slides/integrate/injection_settings.h"
 #include "slides/surfaces/deposit_metrics.h"
 
 #include <cmath>
@@ -52,6 +53,23 @@ nlohmann::json arrivalsAt(const SummaryInputs& inputs, const RunSnapshot& snapsh
     return result;
 }
 
+/// Arrivals per injector and surface: {"gunA": {"target": 120}, ...}.
+nlohmann::json arrivedByInjector(const SummaryInputs& inputs, const RunSnapshot& snapshot) {
+    const auto& names = inputs.injectorNames;
+    std::vector<std::vector<std::uint64_t>> counts(
+        names.size(), std::vector<std::uint64_t>(inputs.surfaces.size(), 0));
+    for (const Arrival& arrival : snapshot.arrivals)
+        ++counts[static_cast<std::size_t>(injectorOfId(inputs.injectorFirstIds, arrival.id))]
+                [static_cast<std::size_t>(arrival.surface)];
+    nlohmann::json byInjector = nlohmann::json::object();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        byInjector[names[i]] = nlohmann::json::object();
+        for (std::size_t s = 0; s < inputs.surfaces.size(); ++s)
+            byInjector[names[i]][inputs.surfaces[s].name] = counts[i][s];
+    }
+    return byInjector;
+}
+
 } // namespace
 
 nlohmann::json escapedThrough(const RunCounters& counters,
@@ -88,6 +106,8 @@ nlohmann::json runSummary(const RunSnapshot& snapshot, const SummaryInputs& inpu
                             {"escapedThrough", escapedThrough(counters, metrics.boundaryNames)},
                             {"active", snapshot.cloud.size()}};
     summary["arrivals"] = arrivals;
+    if (!inputs.injectorNames.empty())
+        summary["particles"]["arrivedByInjector"] = arrivedByInjector(inputs, snapshot);
     if (counters.collisions > 0 || inputs.collisions)
         summary["collisions"] = {{"particlePairs", counters.collisions}};
     for (std::size_t s = 0; s < surfaces.size(); ++s) {

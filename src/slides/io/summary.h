@@ -37,6 +37,10 @@ struct SummaryInputs {
     double stokesResponseTime = 0; ///< at the mean radius [s]
     nlohmann::json sceneAnalysis;  ///< the scene analysis as JSON; null when not run
     nlohmann::json settings;       ///< every setting used, in SI units
+    /// The injectors of `injectors {}` and their first particle ids; empty: arrivals are not
+    /// split by injector.
+    std::vector<std::string> injectorNames;
+    std::vector<std::uint64_t> injectorFirstIds;
 };
 
 /// Escapes by exit name: the carrier's patches by name, the domain box as "domain".

@@ -88,6 +88,14 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
             spin->SetTypedTuple(i, (*frame.angularVelocity)[static_cast<std::size_t>(i)].data());
         add(ParticleField::angularVelocity, spin);
     }
+    if (frame.injector) {
+        vtkNew<vtkTypeInt32Array> injector;
+        injector->SetName("injector");
+        injector->SetNumberOfValues(count);
+        for (vtkIdType i = 0; i < count; ++i)
+            injector->SetValue(i, (*frame.injector)[static_cast<std::size_t>(i)]);
+        data->AddArray(injector);
+    }
     data->SetActiveScalars("speed");
     data->SetActiveVectors("velocity");
 

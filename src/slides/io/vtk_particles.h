@@ -4,7 +4,8 @@
 // Point arrays (those in the frame's field set, io/particle_fields.h): id (Int64), diameter [m],
 // velocity [m/s] (3 components), speed [m/s], state (Int32, ParticleState: 0 active,
 // 1 arrived, 2 escaped), temperature [K] (only when the frame has temperatures: heat transfer
-// on); speed is the active scalar when written.
+// on), injector (Int32, the index of the injector in `injectors {}`, when there are several);
+// speed is the active scalar when written.
 // Binary, zlib-compressed, appended. A frame without particles is a valid empty dataset.
 // readParticlesVtp reads a frame back, value for value (a restart rebuilds the HDF5 frames
 // before its checkpoint from them, io/checkpoint.h).
@@ -31,13 +32,16 @@ struct ParticleFrame {
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
     std::optional<std::span<const double>> temperature = std::nullopt;   ///< [K]; none: no heating
     std::optional<std::span<const Vec3>> angularVelocity = std::nullopt; ///< [rad/s]; none: no ω
+    /// Index of the injector each particle came from; none: one injector.
+    std::optional<std::span<const std::int32_t>> injector = std::nullopt;
 
     /// Whether every array holds one entry per particle.
     bool consistent() const {
         const std::size_t count = id.size();
         return position.size() == count && velocity.size() == count && radius.size() == count &&
                state.size() == count && (!temperature || temperature->size() == count) &&
-               (!angularVelocity || angularVelocity->size() == count);
+               (!angularVelocity || angularVelocity->size() == count) &&
+               (!injector || injector->size() == count);
     }
 };
 

@@ -92,9 +92,33 @@ void requireInside(const Scene& scene, const CarrierField& carrier, std::span<co
         refuse(outside, "the domain box");
 }
 
+/// The start points of one injector of `injectors {}`: its disc (or point), or its file's rows
+/// (an even selection of them).
+void requireInjectorInside(const Scene& scene, const CarrierField& carrier,
+                           const InjectorSettings& injector) {
+    const std::string base = "injectors." + injector.name;
+    if (injector.model == InjectionModel::file) {
+        const std::size_t stride = std::max<std::size_t>(1, injector.rows.size() / latticeSamples);
+        std::vector<Vec3> points;
+        for (std::size_t k = 0; k < injector.rows.size(); k += stride)
+            points.push_back(injector.rows[k].position);
+        requireInside(scene, carrier, points, base + ".file",
+                      "the " + std::to_string(injector.rows.size()) + " particles of the file");
+        return;
+    }
+    std::ostringstream disc;
+    disc << "the disc of injector " << injector.name << " of radius " << injector.nozzle.radius
+         << " m";
+    requireInside(scene, carrier, discPoints(injector.nozzle, carrier.planeNormal()),
+                  base + (injector.nozzle.radius > 0 ? ".radius" : ".centre"), disc.str());
+}
+
 } // namespace
 
 void requireInjectionInside(const Scene& scene, const CarrierField& carrier) {
+    for (const InjectorSettings& injector : scene.injectors)
+        requireInjectorInside(scene, carrier, injector);
+    if (!scene.injectors.empty()) return;
     if (scene.injection.mode == InjectionMode::lattice) {
         requireInside(scene, carrier, latticePoints(scene), "injection.latticeCoeffs.origin",
                       "the lattice of " + std::to_string(scene.particles.count) + " sites");

@@ -94,6 +94,10 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     const bool writes = ranks.rank() == 0;
     const bool quiet = options.quiet || !writes;
     if (!quiet) describeRun(resolved, threads);
+    if (options.check) { // everything read and the analysis run; nothing is written
+        if (!quiet) std::printf("check: the case reads and resolves; nothing written\n");
+        return;
+    }
 
     const auto outputDirectory =
         options.output.empty() ? options.caseDirectory / "slides" : options.output;

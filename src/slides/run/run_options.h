@@ -1,6 +1,7 @@
 // Run options: what the command line asks of one run (src/app/main.cpp fills them).
 //
 //     slides-track CASE --output DIR --end-time 0.01 --dt 1e-5 --threads 2 --checkpoint-every 500
+//     slides-track CASE --check
 #pragma once
 
 #include <filesystem>
@@ -25,6 +26,7 @@ struct RunOptions {
     bool restart = false;     ///< continue from OUTPUT/checkpoint.h5
     bool quiet = false;       ///< no progress display or report
     bool parallel = false;    ///< -parallel: the case's processor*/ parts, one a rank (MPI)
+    bool check = false;       ///< read and resolve the case, print the decisions, write nothing
 };
 
 } // namespace slides

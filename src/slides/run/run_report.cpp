@@ -34,7 +34,8 @@ RunOutputSettings runOutputSettings(const Scene& scene) {
     return {.output = scene.output,
             .caseDirectory = scene.caseDirectory,
             .temperature = scene.physics.heatTransfer != HeatTransferModel::none,
-            .spin = tracksSpin(scene)};
+            .spin = tracksSpin(scene),
+            .injectorFirstIds = injectorFirstIds(scene)};
 }
 
 SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {
@@ -46,7 +47,9 @@ SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {
             .collisions = scene.collisions.model != CollisionModel::none,
             .stokesResponseTime = meanStokesResponseTime(scene.particles, scene.fluid),
             .sceneAnalysis = analysis ? sceneAnalysisJson(*analysis) : nlohmann::json(),
-            .settings = sceneSettings(scene)};
+            .settings = sceneSettings(scene),
+            .injectorNames = injectorNames(scene),
+            .injectorFirstIds = injectorFirstIds(scene)};
 }
 
 nlohmann::json runSummary(const ResolvedScene& resolved, const RunSnapshot& snapshot,

@@ -22,7 +22,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
                                scene.fluid.kinematicViscosity, scene.particles.density},
       bodyAcceleration_(bodyAcceleration(scene.physics.gravity, scene.particles.density,
                                          scene.fluid.density, scene.physics.buoyancy)),
-      injector_(scene.injection, scene.nozzle, scene.particles),
+      injectors_(injectorsOf(scene), scene.collisions.model != CollisionModel::none),
       needs_(scene.physics.carrierNeeds()), dispersion_(scene.physics, scene.injection.seed),
       heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
       surfaces_(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
@@ -48,7 +48,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
 bool Stepper::finished() const {
     const double endTime = scene_.time.endTime;
     if (time_ >= endTime * (1 - 1e-12)) return true;
-    return scene_.time.stopWhenAllDone && injector_.finished() &&
+    return scene_.time.stopWhenAllDone && injectors_.finished() &&
            (exchange_ ? exchange_->everyRankEmpty(cloud_.size()) : cloud_.empty());
 }
 
@@ -58,8 +58,8 @@ long Stepper::collisions() const {
 }
 
 RunCounters Stepper::counters() const {
-    return {time_,          steps_,          injector_.injected(), escaped_,
-            particleSteps_, escapedThrough_, collisions(),         surfaces_.rebounds()};
+    return {time_,          steps_,          injectors_.injected(), escaped_,
+            particleSteps_, escapedThrough_, collisions(),          surfaces_.rebounds()};
 }
 
 RunSnapshot Stepper::snapshot() const {
@@ -75,7 +75,7 @@ void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
     escaped_ = counters.escaped;
     escapedThrough_ = counters.escapedThrough;
     particleSteps_ = counters.particleSteps;
-    injector_.resumeAfter(counters.injected);
+    injectors_.resumeAt(counters.time, counters.injected);
     if (collisions_) collisions_->resume(counters.collisions);
     if (softSpheres_) softSpheres_->resume(counters.collisions, std::move(springs));
     surfaces_.resumeRebounds(counters.rebounds);
@@ -139,11 +139,11 @@ void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
 void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();
     firstFresh_ = alreadyInFlight;
-    injector_.injectUntil(time_ + h, time_, carrier_, cloud_);
+    injectors_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
     stepLengths_.assign(cloud_.size(), h);
     for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
-        stepLengths_[i] = std::clamp(time_ + h - injector_.injectionTime(cloud_.id[i]), 0.0, h);
+        stepLengths_[i] = std::clamp(time_ + h - injectors_.injectionTime(cloud_.id[i]), 0.0, h);
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     particleSteps_ += cloud_.size();

@@ -46,7 +46,7 @@
 #include "slides/collide/soft_sphere_collisions.h"
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
-#include "slides/integrate/injector.h"
+#include "slides/integrate/injector_set.h"
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
 #include "slides/integrate/plane_constraint.h"
@@ -80,7 +80,7 @@ public:
     double time() const { return time_; }
     long steps() const { return steps_; }
     std::uint64_t particleSteps() const { return particleSteps_; }
-    long injected() const { return injector_.injected(); }
+    long injected() const { return injectors_.injected(); }
     long escaped() const { return escaped_; }
     /// Escapes by exit, as RunCounters::escapedThrough.
     const std::vector<std::uint64_t>& escapedThrough() const { return escapedThrough_; }
@@ -155,7 +155,7 @@ private:
     const CarrierField& carrier_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;
-    Injector injector_;
+    InjectorSet injectors_;
     CarrierNeeds needs_; ///< k, ε and T when dispersion or heat transfer is on
     TurbulentDispersion dispersion_;
     ParticleHeating heating_;
