@@ -259,18 +259,21 @@ void Stepper::advanceByMidpointRule(double h) {
     // their midpoint values (second order). Block by block, so the samples and the prediction
     // stay in the core's cache; the start sample is the stage's one (gas_) when another stage
     // needs it too, else the block's own.
+    // A parallel run's carrier samples collectively (run/rank_carrier.h): every rank makes the
+    // same calls, so there the cloud is one block on one thread, empty or not.
     const std::size_t count = cloud_.size();
-    const auto blocks = static_cast<std::ptrdiff_t>((count + midpointBlock - 1) / midpointBlock);
+    const std::size_t block = exchange_ ? std::max<std::size_t>(count, 1) : midpointBlock;
+    const auto blocks = static_cast<std::ptrdiff_t>(exchange_ ? 1 : (count + block - 1) / block);
     const bool keepsLocations = carrier_.keepsLocations();
     const bool sampled = samplesGasForAll();
-    const bool parallel = static_cast<std::ptrdiff_t>(count) >= minimumParallelBatch;
+    const bool parallel = !exchange_ && static_cast<std::ptrdiff_t>(count) >= minimumParallelBatch;
     midpointScratch_.resize(
         std::max(midpointScratch_.size(), static_cast<std::size_t>(omp_get_max_threads())));
 #pragma omp parallel for schedule(dynamic) if (parallel)
     for (std::ptrdiff_t b = 0; b < blocks; ++b) {
         MidpointScratch& scratch = midpointScratch_[static_cast<std::size_t>(omp_get_thread_num())];
-        const std::size_t first = static_cast<std::size_t>(b) * midpointBlock;
-        const std::size_t n = std::min(midpointBlock, count - first);
+        const std::size_t first = static_cast<std::size_t>(b) * block;
+        const std::size_t n = std::min(block, count - first);
         const std::span x(cloud_.position.data() + first, n);
         const std::span v(cloud_.velocity.data() + first, n);
         const std::span radius(cloud_.radius.data() + first, n);
