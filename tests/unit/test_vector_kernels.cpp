@@ -1,7 +1,8 @@
 // ctest-labels: foundation physics carrier
 // The SIMD kernels against their scalar references, over many random particles: the exact drag
-// relaxation (integrate/relaxation_batch.h against relaxExactly with dragResponseTime, every
-// drag law of Eq. 3.16–3.17 and its kin, Re from 0 past the 1000 switch) and the sech² jet's
+// relaxation (integrate/relaxation_batch.h against relaxExactly with dragResponseTime) and the
+// response times alone (physics/drag_response.h), every drag law of Eq. 3.16–3.17 and its
+// kin, Re from 0 past the 1000 switch; the sech² jet's
 // velocity (carrier/bickley_batch.h against JetFrame::sample with BickleyProfile::at,
 // Eq. 5.10/5.11: behind the exit, in the core, on the axis, far out). Tolerance: each result is
 // a chain of about ten operations, each within 4 ulp in Highway's maths (expm1, log) and ½ ulp
@@ -17,6 +18,7 @@
 #include "slides/integrate/eddy_batch.h"
 #include "slides/integrate/integrator.h"
 #include "slides/integrate/relaxation_batch.h"
+#include "slides/physics/drag_response.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -81,6 +83,18 @@ TEST_P(RelaxationKernel, MatchesScalarRelaxExactly) {
             << "particle " << i;
     }
     EXPECT_GT(largestReynolds, 1000) << "the laws' switch at Re = 1000 is covered";
+}
+
+TEST_P(RelaxationKernel, ResponseTimesMatchScalarDragResponseTime) {
+    const DragParameters drag{GetParam(), 1.2, 1.5e-5, 5680};
+    const Particles p = randomParticles(13);
+    std::vector<double> slip, tau(particleCount);
+    for (std::size_t i = 0; i < particleCount; ++i) slip.push_back((p.u[i] - p.w[i]).norm());
+    dragResponseTimes(drag, p.radius, slip, tau);
+    for (std::size_t i = 0; i < particleCount; ++i) {
+        const double expected = dragResponseTime(drag, p.radius[i], slip[i]);
+        EXPECT_LE(std::abs(tau[i] - expected), tolerance * expected) << "particle " << i;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryDragLaw, RelaxationKernel,

@@ -1,12 +1,14 @@
 #include "slides/integrate/maxey_riley.h"
 
 #include "slides/core/parallel.h"
+#include "slides/physics/drag_response.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/particle_reynolds.h"
 #include "slides/physics/spin.h"
 
 #include <cmath>
+#include <span>
 
 namespace slides {
 
@@ -113,6 +115,29 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     }
     sampleEnd(predicted_, gasEnd_);
 
+    // The drag response times the step freezes k at (below), in SIMD lanes: at the slips of both
+    // ends after a release with slip, else at the predicted midpoint slip (the end's unused).
+    const auto releasedWithSlip = [&](const double* state) {
+        return history_ && !Vec3(state + historyOffset_).isZero(0);
+    };
+    slipSpeeds_.resize(2 * cloud.size());
+    responseTimes_.resize(2 * cloud.size());
+    const auto starts = std::span(slipSpeeds_).first(cloud.size());
+    const auto ends = std::span(slipSpeeds_).last(cloud.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const auto n = static_cast<std::size_t>(i);
+        const Vec3 slipStart = gasStart.velocity[n] - v[n];
+        const Vec3 slipEnd = gasEnd_.velocity[n] - predictedVelocity_[n];
+        const bool bothEnds = releasedWithSlip(stateOf(i));
+        starts[n] = (bothEnds ? slipStart : Vec3(0.5 * (slipStart + slipEnd))).norm();
+        ends[n] = bothEnds ? slipEnd.norm() : 0.0;
+    }
+    const auto tauStart = std::span(responseTimes_).first(cloud.size());
+    const auto tauEnd = std::span(responseTimes_).last(cloud.size());
+    dragResponseTimes(drag_, cloud.radius, starts, tauStart);
+    dragResponseTimes(drag_, cloud.radius, ends, tauEnd);
+
     const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
     const LiftModel lift = physics_.lift;
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
@@ -133,16 +158,14 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
         // slip, so the mean of k_n + (k_{n+1} − k_n)(√t − √t_n)/(√t_{n+1} − √t_n) over the step,
         // k_n + (k_{n+1} − k_n)(2b + a)/(3(a + b)), a = √t_n, b = √t_{n+1} (2/3 on the first step,
         // → ½ later): the midpoint would cost half an order there.
-        const auto dragRate = [&](const Vec3& slip) {
-            return particleDensity / effectiveDensity /
-                   dragResponseTime(drag_, radius, slip.norm());
-        };
-        if (history_ && !Vec3(state + historyOffset_).isZero(0)) {
+        const auto n = static_cast<std::size_t>(i);
+        const double kStart = particleDensity / effectiveDensity / tauStart[n];
+        if (releasedWithSlip(state)) {
             const double a = std::sqrt(state[0]), b = std::sqrt(state[0] + step.h);
-            const double kStart = dragRate(slipStart), kEnd = dragRate(slipEnd);
+            const double kEnd = particleDensity / effectiveDensity / tauEnd[n];
             step.dragRate = kStart + (kEnd - kStart) * (2 * b + a) / (3 * (a + b));
         } else {
-            step.dragRate = dragRate(0.5 * (slipStart + slipEnd));
+            step.dragRate = kStart;
         }
         step.forceStart = step.forceEnd = bodyAcceleration_;
         if (needs_.velocityGradient) {

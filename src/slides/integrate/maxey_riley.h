@@ -89,6 +89,8 @@ private:
     std::vector<Vec3> predictedVelocity_;   ///< v* at the step's end
     std::vector<Vec3> smoothVelocity_;      ///< w_n = v_n + s0 φ(age)
     std::vector<StartModeStep> startModes_; ///< φ and its integrals at both ends of the step
+    std::vector<double> slipSpeeds_;        ///< |u − v| the drag is taken at: N starts, N ends
+    std::vector<double> responseTimes_;     ///< τ at those slips, the same layout
 };
 
 } // namespace slides
