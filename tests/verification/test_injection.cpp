@@ -563,6 +563,35 @@ injectors { rows { model file; file "constant/rows.csv"; startTime 1e-3; } }
     EXPECT_EQ(injectors.injectionTime(1), 1e-3 + 2.5e-3);
 }
 
+TEST(FileInjection, SpinAndTemperatureColumnsStartTheParticles) {
+    test::ScratchDirectory scratch("inject-csv-states");
+    std::ofstream(scratch.path / "constant" / "rows.csv")
+        << "x y z u v w r wx wy wz T\n0.001 0 0 20 0 0 8e-5 100 -200 300 350\n";
+    const std::string rows = "injectors { rows { model file; file \"constant/rows.csv\"; } }\n";
+    Scene scene = sceneOf(scratch, sprayDictionary(rows + "physics { spin on; heatTransfer { "
+                                                          "model ranzMarshall; } }\n"
+                                                          "particles { specificHeat 450; }\n",
+                                                   0));
+    scene.collisions.model = CollisionModel::none;
+    const auto carrier = carrierOf(scene);
+    Stepper stepper(scene, *carrier);
+    stepper.step();
+    // After one step of 10 µs, against relaxation times of 88 ms (spin, Eq. 3.18) and seconds
+    // (temperature, Eq. 3.27): the given values to 1e-3.
+    const ParticleCloud& cloud = stepper.cloud();
+    ASSERT_EQ(cloud.size(), 1u);
+    EXPECT_LT((cloud.angularVelocity[0] - Vec3(100, -200, 300)).norm(), 1e-3 * 374);
+    EXPECT_NEAR(cloud.temperature[0], 350, 1e-3 * 350);
+    // Values the particles could not keep are refused, not dropped.
+    try {
+        sceneOf(scratch, sprayDictionary(rows, 0));
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.key(), "injectors.rows.file");
+        EXPECT_NE(std::string(error.what()).find("gives spins (wx wy wz)"), std::string::npos);
+    }
+}
+
 TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     test::ScratchDirectory scratch("inject-csv-bad");
     const auto table = scratch.path / "constant" / "rows.csv";
@@ -583,7 +612,7 @@ TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     EXPECT_EQ(refusal("x y z u v w d t\n0 0 0 1 1 1 1e-4 2\n0 0 0 1 1 1 1e-4 1\n"),
               "3 t: goes back in time: rows must be in order of injection time");
     EXPECT_EQ(refusal("x y z u v w diameter\n"),
-              "1 diameter: unknown column; columns are x y z u v w d r t");
+              "1 diameter: unknown column; columns are x y z u v w d r t wx wy wz T");
     EXPECT_EQ(refusal("x y z u v w r\n0 0 0 1 1 1\n"), "2 : 6 values, the header names 7 columns");
     // The command line: one message, exit status 2.
     std::ofstream(table) << "x y z u v w r\n0 0 0 1 1 1 -1\n";

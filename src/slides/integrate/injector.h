@@ -66,6 +66,9 @@ public:
                id - settings_.firstId < static_cast<ParticleId>(settings_.count);
     }
     const InjectorSettings& settings() const { return settings_; }
+    /// Sets the spin and temperature a file gives its particles at indices [from, size) of
+    /// cloud, where the cloud keeps them (its arrays sized).
+    void setStartStates(ParticleCloud& cloud, std::size_t from) const;
 
 private:
     /// The start position and the velocity added to the gas velocity (random, or the given one),
