@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -227,6 +228,34 @@ TEST(SeveralInjectors, RestartResumesEachInjectorWhereItStood) {
     for (std::size_t i = 0; i < whole.cloud().size(); ++i) {
         ASSERT_EQ(resumed.cloud().id[i], whole.cloud().id[i]);
         ASSERT_TRUE(resumed.cloud().position[i] == whole.cloud().position[i]);
+    }
+}
+
+TEST(SeveralInjectors, CollidingRunOfTwoInjectorsIsTheSameForOneAndTwoThreads) {
+    // Both injectors into one spray, impulse collisions and the overlap-free placement on.
+    test::ScratchDirectory scratch("inject-threads");
+    std::string text = sprayDictionary(twoGuns, 0);
+    text.replace(text.find("collisions { model none; }"), 26, "collisions { model impulse; }");
+    Scene scene = sceneOf(scratch, text);
+    const auto carrier = carrierOf(scene);
+    std::vector<Arrival> arrivals[2];
+    long contacts[2] = {0, 0};
+    for (int threads = 1; threads <= 2; ++threads) {
+        omp_set_num_threads(threads);
+        Stepper stepper(scene, *carrier);
+        for (int step = 0; step < 800; ++step) stepper.step();
+        arrivals[threads - 1] = stepper.arrivals();
+        contacts[threads - 1] = stepper.collisions();
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_GT(contacts[0], 0);
+    EXPECT_EQ(contacts[0], contacts[1]);
+    ASSERT_GT(arrivals[0].size(), 100u);
+    ASSERT_EQ(arrivals[0].size(), arrivals[1].size());
+    for (std::size_t k = 0; k < arrivals[0].size(); ++k) {
+        ASSERT_EQ(arrivals[0][k].id, arrivals[1][k].id);
+        ASSERT_TRUE(arrivals[0][k].position == arrivals[1][k].position);
+        ASSERT_TRUE(arrivals[0][k].velocity == arrivals[1][k].velocity);
     }
 }
 
