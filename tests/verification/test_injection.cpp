@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -227,6 +228,34 @@ TEST(SeveralInjectors, RestartResumesEachInjectorWhereItStood) {
     for (std::size_t i = 0; i < whole.cloud().size(); ++i) {
         ASSERT_EQ(resumed.cloud().id[i], whole.cloud().id[i]);
         ASSERT_TRUE(resumed.cloud().position[i] == whole.cloud().position[i]);
+    }
+}
+
+TEST(SeveralInjectors, CollidingRunOfTwoInjectorsIsTheSameForOneAndTwoThreads) {
+    // Both injectors into one spray, impulse collisions and the overlap-free placement on.
+    test::ScratchDirectory scratch("inject-threads");
+    std::string text = sprayDictionary(twoGuns, 0);
+    text.replace(text.find("collisions { model none; }"), 26, "collisions { model impulse; }");
+    Scene scene = sceneOf(scratch, text);
+    const auto carrier = carrierOf(scene);
+    std::vector<Arrival> arrivals[2];
+    long contacts[2] = {0, 0};
+    for (int threads = 1; threads <= 2; ++threads) {
+        omp_set_num_threads(threads);
+        Stepper stepper(scene, *carrier);
+        for (int step = 0; step < 800; ++step) stepper.step();
+        arrivals[threads - 1] = stepper.arrivals();
+        contacts[threads - 1] = stepper.collisions();
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_GT(contacts[0], 0);
+    EXPECT_EQ(contacts[0], contacts[1]);
+    ASSERT_GT(arrivals[0].size(), 100u);
+    ASSERT_EQ(arrivals[0].size(), arrivals[1].size());
+    for (std::size_t k = 0; k < arrivals[0].size(); ++k) {
+        ASSERT_EQ(arrivals[0][k].id, arrivals[1][k].id);
+        ASSERT_TRUE(arrivals[0][k].position == arrivals[1][k].position);
+        ASSERT_TRUE(arrivals[0][k].velocity == arrivals[1][k].velocity);
     }
 }
 
@@ -563,6 +592,35 @@ injectors { rows { model file; file "constant/rows.csv"; startTime 1e-3; } }
     EXPECT_EQ(injectors.injectionTime(1), 1e-3 + 2.5e-3);
 }
 
+TEST(FileInjection, SpinAndTemperatureColumnsStartTheParticles) {
+    test::ScratchDirectory scratch("inject-csv-states");
+    std::ofstream(scratch.path / "constant" / "rows.csv")
+        << "x y z u v w r wx wy wz T\n0.001 0 0 20 0 0 8e-5 100 -200 300 350\n";
+    const std::string rows = "injectors { rows { model file; file \"constant/rows.csv\"; } }\n";
+    Scene scene = sceneOf(scratch, sprayDictionary(rows + "physics { spin on; heatTransfer { "
+                                                          "model ranzMarshall; } }\n"
+                                                          "particles { specificHeat 450; }\n",
+                                                   0));
+    scene.collisions.model = CollisionModel::none;
+    const auto carrier = carrierOf(scene);
+    Stepper stepper(scene, *carrier);
+    stepper.step();
+    // After one step of 10 µs, against relaxation times of 88 ms (spin, Eq. 3.18) and seconds
+    // (temperature, Eq. 3.27): the given values to 1e-3.
+    const ParticleCloud& cloud = stepper.cloud();
+    ASSERT_EQ(cloud.size(), 1u);
+    EXPECT_LT((cloud.angularVelocity[0] - Vec3(100, -200, 300)).norm(), 1e-3 * 374);
+    EXPECT_NEAR(cloud.temperature[0], 350, 1e-3 * 350);
+    // Values the particles could not keep are refused, not dropped.
+    try {
+        sceneOf(scratch, sprayDictionary(rows, 0));
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.key(), "injectors.rows.file");
+        EXPECT_NE(std::string(error.what()).find("gives spins (wx wy wz)"), std::string::npos);
+    }
+}
+
 TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     test::ScratchDirectory scratch("inject-csv-bad");
     const auto table = scratch.path / "constant" / "rows.csv";
@@ -583,7 +641,7 @@ TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     EXPECT_EQ(refusal("x y z u v w d t\n0 0 0 1 1 1 1e-4 2\n0 0 0 1 1 1 1e-4 1\n"),
               "3 t: goes back in time: rows must be in order of injection time");
     EXPECT_EQ(refusal("x y z u v w diameter\n"),
-              "1 diameter: unknown column; columns are x y z u v w d r t");
+              "1 diameter: unknown column; columns are x y z u v w d r t wx wy wz T");
     EXPECT_EQ(refusal("x y z u v w r\n0 0 0 1 1 1\n"), "2 : 6 values, the header names 7 columns");
     // The command line: one message, exit status 2.
     std::ofstream(table) << "x y z u v w r\n0 0 0 1 1 1 -1\n";

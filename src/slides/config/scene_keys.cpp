@@ -243,7 +243,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injectors.*.coneCoeffs.speedStandardDeviation", K::scalar, "m/s", "0", {},
          R::nonNegative, "Standard deviation of a normally distributed speed; 0: fixed."},
         {"injectors.*.file", K::word, "-", "-", {}, R::any,
-         "Model file: a CSV whose header names its columns (x y z u v w, d or r, optional t), "
+         "Model file: a CSV whose header names its columns (x y z u v w, d or r; optional t, "
+         "wx wy wz, T), "
          "a particle a row in order of t (integrate/particle_file.h); or a previous run's "
          "particles.h5 (its arrivals). Relative to the case directory."},
         {"injectors.*.radiusDistribution", K::dictionary, "-", "-", {}, R::any,

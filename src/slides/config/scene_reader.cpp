@@ -377,8 +377,7 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
                 if (keys.has(base + "." + given))
                     keys.fail(base + "." + given, "a file injector's particles are its rows");
             const std::filesystem::path file = keys.word(base + ".file");
-            injector.rows =
-                readParticleFile(file.is_absolute() ? file : scene.caseDirectory / file);
+            readParticleFile(file.is_absolute() ? file : scene.caseDirectory / file, injector);
             injector.count = static_cast<long>(injector.rows.size());
         } else {
             injector.injection.mode = *valueNamed(injectionModeNames(), keys.word(base + ".mode"));
@@ -410,6 +409,19 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
         injectors.push_back(std::move(injector));
     }
     return injectors;
+}
+
+/// A file's spins and temperatures need the particles to keep them: never dropped silently.
+void requireFileStatesKept(const KeyReader& keys, const Scene& scene) {
+    for (const InjectorSettings& injector : scene.injectors) {
+        const std::string key = "injectors." + injector.name + ".file";
+        if (injector.rowsGiveSpin && !tracksSpin(scene))
+            keys.fail(key, "gives spins (wx wy wz), but the particles keep none: set physics.spin "
+                           "on, collisions.model, or a surface that rebounds or deposits");
+        if (injector.rowsGiveTemperature && scene.physics.heatTransfer == HeatTransferModel::none)
+            keys.fail(key, "gives temperatures (T), but heat transfer is off: set "
+                           "physics.heatTransfer.model (not auto)");
+    }
 }
 
 MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
@@ -789,6 +801,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         scene.surfaces.push_back(surface);
     }
     readCollisionsAndDeposition(keys, scene);
+    requireFileStatesKept(keys, scene);
     for (const Surface& surface : scene.surfaces)
         if (!surface.patch.empty() && meetsBySoftContact(scene.collisions, surface.interaction))
             keys.fail("surfaces." + surface.name + ".interaction",

@@ -142,10 +142,12 @@ struct ConeSettings {
 
 /// One particle given by a row of a file (integrate/particle_file.h).
 struct ParticleRow {
-    Vec3 position = Vec3::Zero(); ///< [m]
-    Vec3 velocity = Vec3::Zero(); ///< [m/s]
-    double radius = 0;            ///< [m]
-    double time = 0;              ///< injection time after the injector's start [s]
+    Vec3 position = Vec3::Zero();        ///< [m]
+    Vec3 velocity = Vec3::Zero();        ///< [m/s]
+    double radius = 0;                   ///< [m]
+    double time = 0;                     ///< injection time after the injector's start [s]
+    Vec3 angularVelocity = Vec3::Zero(); ///< [rad/s], when the file gives it
+    double temperature = 0;              ///< [K], when the file gives it
 };
 
 /// One injector: where, how many, when, which sizes and with which velocity its particles
@@ -161,7 +163,9 @@ struct InjectorSettings {
     RadiusDistribution radius;
     double startTime = 0; ///< [s], the first particle's injection time
     ConeSettings cone;
-    std::vector<ParticleRow> rows; ///< model file: the particles, in order of injection time
+    std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
+    bool rowsGiveSpin = false;        ///< the file has wx wy wz
+    bool rowsGiveTemperature = false; ///< the file has T
 };
 
 /// The index of the injector whose id block holds id, from the blocks' first ids (ascending).

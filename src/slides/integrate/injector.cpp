@@ -93,6 +93,18 @@ void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
                                           direction / (2.0 * std::numbers::pi));
 }
 
+void Injector::setStartStates(ParticleCloud& cloud, std::size_t from) const {
+    if (!settings_.rowsGiveSpin && !settings_.rowsGiveTemperature) return;
+    for (std::size_t i = from; i < cloud.size(); ++i) {
+        if (!owns(cloud.id[i])) continue;
+        const ParticleRow& row = settings_.rows[cloud.id[i] - settings_.firstId];
+        if (settings_.rowsGiveSpin && i < cloud.angularVelocity.size())
+            cloud.angularVelocity[i] = row.angularVelocity;
+        if (settings_.rowsGiveTemperature && i < cloud.temperature.size())
+            cloud.temperature[i] = row.temperature;
+    }
+}
+
 void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud) {
     positions_.resize(count);
     addedVelocities_.resize(count);

@@ -14,7 +14,9 @@
 // stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre lies
 // within the disc radius plus the two radii of the injector's centre; after 64 attempts (a disc
 // already full) it keeps the last draw. Without an overlap the first draw stands, as without
-// the rule. A file's rows and a lattice are placed as given.
+// the rule. A file's rows and a lattice are placed as given. Each check runs over every particle
+// near the injector: cheap for rate injection (a few a step), quadratic in the count for many
+// particles injected at once (allAtStart).
 //
 // Particle firstId + k is injected at t_k = startTime + k / rate (or startTime; a file row's
 // time). Its radius, position and random velocity come from counter-based random streams keyed
@@ -66,6 +68,9 @@ public:
                id - settings_.firstId < static_cast<ParticleId>(settings_.count);
     }
     const InjectorSettings& settings() const { return settings_; }
+    /// Sets the spin and temperature a file gives its particles at indices [from, size) of
+    /// cloud, where the cloud keeps them (its arrays sized).
+    void setStartStates(ParticleCloud& cloud, std::size_t from) const;
 
 private:
     /// The start position and the velocity added to the gas velocity (random, or the given one),

@@ -34,6 +34,10 @@ bool InjectorSet::finished() const {
                        [](const Injector& injector) { return injector.finished(); });
 }
 
+void InjectorSet::setStartStates(ParticleCloud& cloud, std::size_t from) const {
+    for (const Injector& injector : injectors_) injector.setStartStates(cloud, from);
+}
+
 double InjectorSet::injectionTime(ParticleId id) const {
     return injectors_[static_cast<std::size_t>(injectorOf(id))].injectionTime(id);
 }

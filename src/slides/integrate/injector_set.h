@@ -24,6 +24,8 @@ public:
     /// resumes after its particles due before then.
     void resumeAt(double time, long injected);
     bool finished() const;
+    /// The spins and temperatures files give the particles at indices [from, size) of cloud.
+    void setStartStates(ParticleCloud& cloud, std::size_t from) const;
     /// Time at which particle id enters [s].
     double injectionTime(ParticleId id) const;
     /// The index of the injector particle id came from.

@@ -11,14 +11,21 @@ namespace slides {
 
 namespace {
 
-std::vector<ParticleRow> readCsv(const std::filesystem::path& path) {
-    const CsvTable table = readCsvTable(path, {"x", "y", "z", "u", "v", "w", "d", "r", "t"});
+std::vector<ParticleRow> readCsv(const std::filesystem::path& path, InjectorSettings& injector) {
+    const CsvTable table =
+        readCsvTable(path, {"x", "y", "z", "u", "v", "w", "d", "r", "t", "wx", "wy", "wz", "T"});
     for (const char* name : {"x", "y", "z", "u", "v", "w"})
         if (!table.column(name))
             table.fail(0, name, "missing column (the header needs x y z u v w, d or r)");
     const auto diameter = table.column("d"), radius = table.column("r"), time = table.column("t");
     if (diameter.has_value() == radius.has_value())
         table.fail(0, "d", "give the diameter d or the radius r, one of them");
+    const int spinColumns = int(table.column("wx").has_value()) +
+                            int(table.column("wy").has_value()) +
+                            int(table.column("wz").has_value());
+    if (spinColumns % 3 != 0) table.fail(0, "wx", "give the spin as wx wy wz, all three");
+    injector.rowsGiveSpin = spinColumns == 3;
+    injector.rowsGiveTemperature = table.column("T").has_value();
     const auto at = [&](const std::vector<double>& row, const char* name) {
         return row[*table.column(name)];
     };
@@ -30,6 +37,11 @@ std::vector<ParticleRow> readCsv(const std::filesystem::path& path) {
         row.velocity = Vec3(at(values, "u"), at(values, "v"), at(values, "w"));
         row.radius = diameter ? 0.5 * values[*diameter] : values[*radius];
         row.time = time ? values[*time] : 0.0;
+        if (injector.rowsGiveSpin)
+            row.angularVelocity = Vec3(at(values, "wx"), at(values, "wy"), at(values, "wz"));
+        if (injector.rowsGiveTemperature) row.temperature = at(values, "T");
+        if (injector.rowsGiveTemperature && !(row.temperature > 0))
+            table.fail(k, "T", "must be a positive number (kelvin)");
         if (!(row.radius > 0)) table.fail(k, diameter ? "d" : "r", "must be a positive number");
         if (row.time < 0) table.fail(k, "t", "must not be negative");
         if (!rows.empty() && row.time < rows.back().time)
@@ -75,8 +87,8 @@ std::vector<ParticleRow> readArrivals(const std::filesystem::path& path) {
 
 } // namespace
 
-std::vector<ParticleRow> readParticleFile(const std::filesystem::path& file) {
-    return file.extension() == ".h5" ? readArrivals(file) : readCsv(file);
+void readParticleFile(const std::filesystem::path& file, InjectorSettings& injector) {
+    injector.rows = file.extension() == ".h5" ? readArrivals(file) : readCsv(file, injector);
 }
 
 } // namespace slides

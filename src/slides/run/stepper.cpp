@@ -146,6 +146,9 @@ void Stepper::inject(double h) {
         stepLengths_[i] = std::clamp(time_ + h - injectors_.injectionTime(cloud_.id[i]), 0.0, h);
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
+    if (heating_.on())
+        cloud_.temperature.resize(cloud_.size(), scene_.particles.injectionTemperature);
+    injectors_.setStartStates(cloud_, alreadyInFlight);
     particleSteps_ += cloud_.size();
 }
 
