@@ -108,7 +108,8 @@ TEST(TwoDimensionalMesh, ParticlesStayAtTheMidPlaneAndArriveAsWithoutTheCrossPla
     EXPECT_EQ(planar.injected, particleCount);
     EXPECT_EQ(planar.escaped, 0) << "particles left through the empty patches";
     ASSERT_EQ(planar.arrivals.size(), std::size_t{particleCount});
-    // At the mid-plane to round-off (z = 1 mm has an ulp of 2e-19 m), at rest across it.
+    // At the mid-plane to round-off (z = 1 mm has an ulp of 2e-19 m; the mesh's normal, from
+    // its face areas, is (0 0 1) to round-off), at rest across it.
     EXPECT_LE(planar.largestOffPlane, 1e-15);
     EXPECT_EQ(planar.largestCrossSpeed, 0.0);
     for (const auto& [id, arrival] : planar.arrivals) {
