@@ -80,7 +80,9 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
                                  "holds " + std::to_string(stored.id.size()) +
                                      " particles, the checkpoint counts " +
                                      std::to_string(frames_[n].count) + "; cannot restart");
-            hdf5_->writeFrame(frames_[n].time, stored.view(fields_, heating_, spinning_));
+            ParticleFrame frame = stored.view(fields_, heating_, spinning_);
+            attachInjectors(frame);
+            hdf5_->writeFrame(frames_[n].time, frame);
         }
     }
 }
@@ -111,17 +113,20 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
     ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
     if (heating_) frame.temperature = temperatures_;
     if (spinning_) frame.angularVelocity = spins_;
-    if (!injectorFirstIds_.empty()) {
-        injectors_.resize(ids_.size());
-        for (std::size_t i = 0; i < ids_.size(); ++i)
-            injectors_[i] = injectorOfId(injectorFirstIds_, ids_[i]);
-        frame.injector = injectors_;
-    }
+    attachInjectors(frame);
     writeParticlesVtp(directory_ / name, frame);
     const double time = snapshot.counters.time;
     if (hdf5_) hdf5_->writeFrame(time, frame);
     series_.add(time, name);
     frames_.push_back({time, ids_.size()});
+}
+
+void RunOutput::attachInjectors(ParticleFrame& frame) {
+    if (injectorFirstIds_.empty()) return;
+    injectors_.resize(frame.id.size());
+    for (std::size_t i = 0; i < frame.id.size(); ++i)
+        injectors_[i] = injectorOfId(injectorFirstIds_, frame.id[i]);
+    frame.injector = injectors_;
 }
 
 void RunOutput::finish(const RunSnapshot& snapshot, const nlohmann::json& summary) {

@@ -58,6 +58,9 @@ public:
     const std::vector<FrameRecord>& frames() const { return frames_; }
 
 private:
+    /// With several injectors, frame's `injector` array from its ids (into injectors_).
+    void attachInjectors(ParticleFrame& frame);
+
     std::filesystem::path directory_;
     std::array<int, 3> carrierResolution_;
     PvdSeries series_;
