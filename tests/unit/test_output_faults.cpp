@@ -31,22 +31,28 @@ struct SmallSpray : test::ScratchDirectory {
     }
 };
 
+/// Runs spray with checkpoints every 50 steps under a file-size limit of `kib` KiB (writes past
+/// it fail with EFBIG): the run must end with exit status 2; returns its last error line.
+std::string lastErrorUnderFileSizeLimit(const SmallSpray& spray, int kib) {
+    const fs::path log = spray.path / "log";
+    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f " + std::to_string(kib) +
+                                "; exec " + std::string(SLIDES_TRACK_EXE) + " " +
+                                spray.path.string() + " --output " + (spray.path / "out").string() +
+                                " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    const std::string text = test::slurp(log);
+    return text.substr(text.rfind("\nslides-track: error: ") + 1);
+}
+
 // The checkpoint after the first one cannot be closed (HDF5 flushes it on closing, past the
 // 33 KiB limit): the run printed its error and then died of SIGSEGV in HDF5's shutdown, which
 // closed the half-closed file a second time.
 TEST(OutputFaults, CheckpointThatCannotBeFlushedEndsInExitTwoKeepingThePreviousOne) {
     const SmallSpray spray;
     const fs::path out = spray.path / "out";
-    const fs::path log = spray.path / "log";
-    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 33; exec " +
-                                std::string(SLIDES_TRACK_EXE) + " " + spray.path.string() +
-                                " --output " + out.string() +
-                                " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
-    const int status = std::system(command.c_str());
-    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    EXPECT_EQ(WEXITSTATUS(status), 2);
-    const std::string text = test::slurp(log);
-    const std::string error = text.substr(text.rfind("\nslides-track: error: ") + 1);
+    const std::string error = lastErrorUnderFileSizeLimit(spray, 33);
     EXPECT_TRUE(error.starts_with("slides-track: error: cannot write " +
                                   (out / "checkpoint.h5.tmp-").string()))
         << error;
@@ -69,16 +75,7 @@ TEST(OutputFaults, CheckpointThatCannotBeFlushedEndsInExitTwoKeepingThePreviousO
 TEST(OutputFaults, FramesThatCannotBeFlushedAreWrittenAgainOnRestart) {
     const SmallSpray spray("");
     const fs::path out = spray.path / "out";
-    const fs::path log = spray.path / "log";
-    const std::string command = "/bin/bash -c \"trap '' XFSZ; ulimit -f 350; exec " +
-                                std::string(SLIDES_TRACK_EXE) + " " + spray.path.string() +
-                                " --output " + out.string() +
-                                " --checkpoint-every 50 --threads 1\" > " + log.string() + " 2>&1";
-    const int status = std::system(command.c_str());
-    ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    EXPECT_EQ(WEXITSTATUS(status), 2);
-    const std::string text = test::slurp(log);
-    const std::string error = text.substr(text.rfind("\nslides-track: error: ") + 1);
+    const std::string error = lastErrorUnderFileSizeLimit(spray, 350);
     EXPECT_EQ(error, "slides-track: error: cannot write " +
                          (out / "particles.h5.partial").string() +
                          ": cannot flush to disk (File too large)\n");

@@ -211,6 +211,34 @@ TEST(SeveralInjectors, FramesAndSummaryRecordWhichInjectorEachParticleCameFrom) 
     EXPECT_NE(vtp.find("Name=\"injector\""), std::string::npos);
 }
 
+// A restart writes the HDF5 frames before its checkpoint anew from their .vtp files: they keep
+// the injector array as the frames written after it do.
+TEST(SeveralInjectors, RestartedRunsFramesKeepTheInjectorArray) {
+    test::ScratchDirectory scratch("inject-restart-frames");
+    std::string text = sprayDictionary(twoGuns, 0);
+    text.replace(text.find("count 3000"), 10, "count 300")
+        .replace(text.find("count 5000"), 10, "count 500");
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+    const std::string run =
+        scratch.path.string() + " --quiet --output " + (scratch.path / "out").string();
+    ASSERT_EQ(test::runCli(run + " --checkpoint-every 100", scratch.path / "log"), 0)
+        << test::slurp(scratch.path / "log");
+    ASSERT_EQ(test::runCli(run + " --restart", scratch.path / "log"), 0)
+        << test::slurp(scratch.path / "log");
+    const Hdf5File h5(scratch.path / "out" / "particles.h5", Hdf5Access::readOnly);
+    const auto frames = h5.readInt64("/", "frames");
+    ASSERT_GT(frames, 2);
+    for (std::int64_t frame = 0; frame < frames; ++frame) {
+        char group[32];
+        std::snprintf(group, sizeof group, "/frames/%06lld", static_cast<long long>(frame));
+        const auto ids = h5.readUInt64(std::string(group) + "/id");
+        const auto injector = h5.readInt32(std::string(group) + "/injector");
+        ASSERT_EQ(injector.size(), ids.size()) << group;
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            ASSERT_EQ(injector[i], ids[i] < 300 ? 0 : 1) << group;
+    }
+}
+
 TEST(SeveralInjectors, RestartResumesEachInjectorWhereItStood) {
     test::ScratchDirectory scratch("inject-restart");
     const Scene scene = sceneOf(scratch, sprayDictionary(twoGuns, 0));
