@@ -137,10 +137,10 @@ std::optional<TetLocation> FoamLocator::locateInCell(const Vec3& point, int cell
 TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
     TetLocation outside;
     const Vec3 slack = 1e-9 * (mesh_.boundsMax - mesh_.boundsMin); // points on the boundary
+    bool inBox = true;
     for (int axis = 0; axis < 3; ++axis)
-        if (point[axis] < mesh_.boundsMin[axis] - slack[axis] ||
-            point[axis] > mesh_.boundsMax[axis] + slack[axis])
-            return outside;
+        inBox = inBox && point[axis] >= mesh_.boundsMin[axis] - slack[axis] &&
+                point[axis] <= mesh_.boundsMax[axis] + slack[axis];
     std::array<int, 3> index{};
     for (int axis = 0; axis < 3; ++axis)
         index[axis] =
@@ -149,7 +149,8 @@ TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
     const int bin = (index[0] * bins_[1] + index[1]) * bins_[2] + index[2];
     // Walk from the bin's cell whose centre is nearest: the point is a cell or two away. Under
     // a graded mesh a bin holds up to ~100 cells, and a distance is far cheaper than a cell's
-    // tetrahedra.
+    // tetrahedra. A point outside the mesh's box walks from the nearest bin to the boundary face
+    // it lies beyond: the patch it left through.
     int nearest = -1;
     double nearestDistance = INFINITY;
     for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k) {
@@ -166,12 +167,16 @@ TetLocation FoamLocator::locateGlobally(const Vec3& point) const {
         return walked;
     // The walk left through the boundary (the point is outside, or beyond a concave part of
     // it) or was lost: test the bin's cells whose boxes hold the point.
-    for (int k = binOffsets_[bin]; k < binOffsets_[bin + 1]; ++k) {
+    for (int k = binOffsets_[bin]; inBox && k < binOffsets_[bin + 1]; ++k) {
         const int cell = binCells_[k];
         if ((point.array() < cellLow_[cell].array()).any() ||
             (point.array() > cellHigh_[cell].array()).any())
             continue;
         if (auto found = locateInCell(point, cell)) return *found;
+    }
+    if (boundaryFace >= 0) {
+        outside.exitPatch = mesh_.facePatch[boundaryFace];
+        outside.exitFace = boundaryFace;
     }
     return outside;
 }
@@ -187,7 +192,7 @@ TetLocation FoamLocator::locateFrom(const Vec3& point, int startTet) const {
     if (const TetLocation walked = walk(point, startTet, boundaryFace); walked.found())
         return walked;
     TetLocation searched = locateGlobally(point);
-    if (!searched.found() && boundaryFace >= 0) {
+    if (!searched.found() && boundaryFace >= 0) { // the walk from the particle's last place
         searched.exitPatch = mesh_.facePatch[boundaryFace];
         searched.exitFace = boundaryFace;
     }

@@ -51,7 +51,8 @@ public:
     /// startTet < 0).
     TetLocation locateFrom(const Vec3& point, int startTet) const;
     /// The location of point by the bin grid (a walk from the bin's cell with the nearest
-    /// centre; else the first of its cells that holds it), or outside.
+    /// centre; else the first of its cells that holds it), or outside with the patch of the
+    /// boundary face that walk reached (also for a point outside the mesh's box).
     TetLocation locateGlobally(const Vec3& point) const;
     /// The location of point within cell, if the cell holds it (weights ≥ −tolerance).
     std::optional<TetLocation> locateInCell(const Vec3& point, int cell) const;
