@@ -175,12 +175,17 @@ TEST(SeveralInjectors, IdsInInjectorBlocksEachOnItsOwnDiscAndSchedule) {
     }
 }
 
-TEST(SeveralInjectors, FramesAndSummaryRecordWhichInjectorEachParticleCameFrom) {
-    test::ScratchDirectory scratch("inject-output");
+/// The two guns with 300 (upper: ids 0–299) and 500 particles, as scratch's dictionary.
+void writeSmallTwoGuns(const test::ScratchDirectory& scratch) {
     std::string text = sprayDictionary(twoGuns, 0);
     text.replace(text.find("count 3000"), 10, "count 300")
         .replace(text.find("count 5000"), 10, "count 500");
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+}
+
+TEST(SeveralInjectors, FramesAndSummaryRecordWhichInjectorEachParticleCameFrom) {
+    test::ScratchDirectory scratch("inject-output");
+    writeSmallTwoGuns(scratch);
     const auto output = scratch.path / "out";
     ASSERT_EQ(test::runCli(scratch.path.string() + " --quiet --output " + output.string(),
                            scratch.path / "log"),
@@ -215,10 +220,7 @@ TEST(SeveralInjectors, FramesAndSummaryRecordWhichInjectorEachParticleCameFrom) 
 // the injector array as the frames written after it do.
 TEST(SeveralInjectors, RestartedRunsFramesKeepTheInjectorArray) {
     test::ScratchDirectory scratch("inject-restart-frames");
-    std::string text = sprayDictionary(twoGuns, 0);
-    text.replace(text.find("count 3000"), 10, "count 300")
-        .replace(text.find("count 5000"), 10, "count 500");
-    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+    writeSmallTwoGuns(scratch);
     const std::string run =
         scratch.path.string() + " --quiet --output " + (scratch.path / "out").string();
     ASSERT_EQ(test::runCli(run + " --checkpoint-every 100", scratch.path / "log"), 0)
