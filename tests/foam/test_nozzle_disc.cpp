@@ -47,14 +47,19 @@ void writeBoxCase(const fs::path& directory, const std::string& radius) {
     writeDictionary(directory, "(0.05 0.05 0.06)", radius);
 }
 
+/// The message of the run of scratch's case, which must be refused (exit status 2).
+std::string refusalOf(const test::ScratchDirectory& scratch) {
+    const fs::path log = scratch.path / "log";
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", log), 2);
+    return test::slurp(log);
+}
+
 TEST(NozzleDisc, PartlyOutsideTheMeshIsRefused) {
     test::ScratchDirectory scratch("nozzleDiscOutside");
     writeBoxCase(scratch.path, "0.08");
-    const fs::path log = scratch.path / "log";
-    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", log), 2);
+    const std::string message = refusalOf(scratch);
     // 235 of the 512 points (46 %) lie outside: the disc reaches past every side of the skewed
     // box (an upright 0.11 × 0.12 m rectangle would leave 35 % of it outside).
-    const std::string message = test::slurp(log);
     const std::string where =
         (scratch.path / "constant" / "slidesProperties").string() + ":28: key 'nozzle.radius': ";
     EXPECT_NE(message.find(where + "the nozzle disc of radius 0.08 m is not inside the OpenFOAM "
@@ -96,10 +101,8 @@ TEST(NozzleDisc, OnATwoDimensionalMeshItIsTheSlotInThePlane) {
 TEST(NozzleDisc, SlotPartlyOutsideATwoDimensionalMeshIsRefused) {
     test::ScratchDirectory scratch("nozzleSlotOutside");
     writePlanarCase(scratch.path, "0.03");
-    const fs::path log = scratch.path / "log";
-    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", log), 2);
+    const std::string message = refusalOf(scratch);
     // The slot from y = -0.01 to 0.05 m: its sixth below y = 0, 21 of the 129 points, is outside.
-    const std::string message = test::slurp(log);
     EXPECT_NE(message.find(":28: key 'nozzle.radius': the nozzle disc of radius 0.03 m is not "
                            "inside the OpenFOAM mesh: 16 % of it (21 of 129 points spread evenly "
                            "over it) lies outside"),
