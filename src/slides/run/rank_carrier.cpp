@@ -102,7 +102,6 @@ void RankCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
             away.push_back(points[i]);
             awayIndex.push_back(i);
         }
-    if (ranks_.sum(static_cast<std::uint64_t>(away.size())) == 0) return;
     const auto gathered = ranks_.allGather(bytesOf(away));
     std::vector<Vec3> asked;
     std::size_t offset = 0; // of this rank's points in asked
@@ -110,18 +109,20 @@ void RankCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
         if (r == ranks_.rank()) offset = asked.size();
         append(asked, gathered[r]);
     }
+    if (asked.empty()) return;
     std::vector<std::int32_t> found(asked.size(), -1);
     CarrierSample here;
     part_->sampleFrom(asked, found, time, needs, here);
-    std::vector<int> holder(asked.size());
-    for (std::size_t k = 0; k < asked.size(); ++k)
-        holder[k] = found[k] >= 0 ? ranks_.rank() : INT_MAX;
-    ranks_.min(holder);
-    const std::size_t width = sampleWidth(needs);
-    std::vector<double> values(asked.size() * width, 0.0);
+    // One record a point: the claim (this rank where it holds the point), then the values.
+    const std::size_t width = 1 + sampleWidth(needs);
+    std::vector<double> records(asked.size() * width, 0.0);
     for (std::size_t k = 0; k < asked.size(); ++k) {
-        if (holder[k] != ranks_.rank()) continue;
-        double* v = values.data() + k * width;
+        double* v = records.data() + k * width;
+        if (found[k] < 0) {
+            *v = INFINITY;
+            continue;
+        }
+        *v++ = ranks_.rank();
         for (int d = 0; d < 3; ++d) *v++ = here.velocity[k][d];
         if (needs.velocityGradient)
             for (int d = 0; d < 9; ++d) *v++ = here.velocityGradient[k](d % 3, d / 3);
@@ -132,16 +133,16 @@ void RankCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
         if (needs.temperature) *v++ = here.temperature[k];
         *v = part_->resolutionLength(found[k]);
     }
-    ranks_.sum(values);
+    ranks_.keepLowestClaims(records, width); // the lowest rank holding a point answers it
     const std::int32_t remoteBase = part_->locator().tetIndexEnd();
     remoteResolution_.assign(away.size(), INFINITY);
     for (std::size_t j = 0; j < away.size(); ++j) {
         const std::size_t i = awayIndex[j], k = offset + j;
-        if (holder[k] == INT_MAX) { // outside the whole mesh: never through a processor patch
+        const double* v = records.data() + k * width;
+        if (!(*v++ < INFINITY)) { // outside the whole mesh: never through a processor patch
             if (locations[i] <= -3 && -3 - locations[i] >= firstProcessorPatch()) locations[i] = -2;
             continue;
         }
-        const double* v = values.data() + k * width;
         for (int d = 0; d < 3; ++d) out.velocity[i][d] = *v++;
         if (needs.velocityGradient)
             for (int d = 0; d < 9; ++d) out.velocityGradient[i](d % 3, d / 3) = *v++;

@@ -4,6 +4,7 @@
 #define OMPI_SKIP_MPICXX 1
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -91,6 +92,30 @@ void RankCommunicator::max(std::span<double> values) const {
           "MPI_Allreduce");
 }
 
+void RankCommunicator::keepLowestClaims(std::span<double> records, std::size_t width) const {
+    if (!mpi_ || records.empty()) return;
+    MPI_Datatype record = MPI_DATATYPE_NULL;
+    check(MPI_Type_contiguous(countOf(width), MPI_DOUBLE, &record), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&record), "MPI_Type_commit");
+    // inout[k] = in[k] where in's claim is smaller: commutative and associative.
+    MPI_User_function* lowestClaim = [](void* in, void* inout, int* count, MPI_Datatype* type) {
+        int bytes = 0;
+        MPI_Type_size(*type, &bytes);
+        const auto size = static_cast<std::size_t>(bytes) / sizeof(double);
+        const auto* from = static_cast<const double*>(in);
+        auto* into = static_cast<double*>(inout);
+        for (int k = 0; k < *count; ++k, from += size, into += size)
+            if (from[0] < into[0]) std::copy(from, from + size, into);
+    };
+    MPI_Op operation = MPI_OP_NULL;
+    check(MPI_Op_create(lowestClaim, 1, &operation), "MPI_Op_create");
+    const int status = MPI_Allreduce(MPI_IN_PLACE, records.data(), countOf(records.size() / width),
+                                     record, operation, MPI_COMM_WORLD);
+    MPI_Op_free(&operation);
+    MPI_Type_free(&record);
+    check(status, "MPI_Allreduce");
+}
+
 std::vector<Bytes> RankCommunicator::exchange(const std::vector<Bytes>& outgoing) const {
     if (!mpi_) return outgoing;
     std::vector<int> sendCounts(static_cast<std::size_t>(size_)), receiveCounts(sendCounts.size());
@@ -128,6 +153,7 @@ std::vector<Bytes> RankCommunicator::allGather(std::span<const std::byte> bytes)
           "MPI_Allgather");
     std::size_t total = 0;
     const auto offsets = displacements(counts, total);
+    if (total == 0) return std::vector<Bytes>(counts.size());
     Bytes all(total);
     check(MPI_Allgatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(), offsets.data(),
                          MPI_BYTE, MPI_COMM_WORLD),

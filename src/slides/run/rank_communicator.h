@@ -39,10 +39,14 @@ public:
     void min(std::span<int> values) const;
     void min(std::span<double> values) const;
     void max(std::span<double> values) const;
+    /// Records of `width` doubles laid end to end, the first of each this rank's claim to it
+    /// (its rank, or +∞ for none): afterwards every rank holds, for each record, the one of
+    /// the rank with the smallest claim, bit for bit (one reduction).
+    void keepLowestClaims(std::span<double> records, std::size_t width) const;
     /// outgoing[r] goes to rank r (non-blocking sends and receives between the pairs that have
     /// something to say); returns what each rank sent here, by rank.
     std::vector<Bytes> exchange(const std::vector<Bytes>& outgoing) const;
-    /// Every rank's bytes, by rank, on every rank.
+    /// Every rank's bytes, by rank, on every rank (one collective when every rank has none).
     std::vector<Bytes> allGather(std::span<const std::byte> bytes) const;
     /// Every rank's bytes, by rank, on rank 0 (empty elsewhere).
     std::vector<Bytes> gather(std::span<const std::byte> bytes) const;
