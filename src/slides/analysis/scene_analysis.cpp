@@ -2,6 +2,7 @@
 
 #include "slides/analysis/term_estimates.h"
 #include "slides/core/name_table.h"
+#include "slides/integrate/patch_sampler.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/heat_transfer.h"
@@ -87,9 +88,15 @@ constexpr std::size_t maxSlipSamples = 1024;
 /// Accumulates the estimates over the pilot's steps.
 class PathEstimator {
 public:
-    explicit PathEstimator(const Scene& scene)
+    PathEstimator(const Scene& scene, const CarrierField& carrier)
         : scene_(scene), drag_{scene.physics.drag, scene.fluid.density,
                                scene.fluid.kinematicViscosity, scene.particles.density} {
+        // Each injector sprays through its disc, or the faces of its patch.
+        for (const InjectorSettings& injector : injectorsOf(scene))
+            patchAreas_.push_back(
+                injector.model == InjectionModel::patch
+                    ? PatchSampler(carrier.patchTriangles(injector.patch.name)).area()
+                    : 0.0);
         const FluidSettings& fluid = scene.fluid;
         densityRatio_ = fluid.density / scene.particles.density;
         prandtl_ = prandtlNumber(fluid.density, fluid.kinematicViscosity, fluid.specificHeat,
@@ -120,6 +127,7 @@ private:
 
     const Scene& scene_;
     DragParameters drag_;
+    std::vector<double> patchAreas_; ///< by injector: its patch's area [m²], 0 for a disc
     double densityRatio_ = 0;
     double prandtl_ = 0;
     std::map<ParticleId, Track> tracks_;
@@ -283,11 +291,13 @@ void PathEstimator::visitCloud(const PilotStep& step) {
     if (initialSpread_ == 0) {
         initialSpread_ = spread;
         initialSpeed_ = speed;
-        // The densest injector's (each of `injectors {}` sprays through its own disc).
+        // The densest injector's (each of `injectors {}` sprays through its own disc or patch).
         double nozzleDensity = 0;
-        for (const InjectorSettings& injector : injectorsOf(scene_)) {
+        const auto injectors = injectorsOf(scene_);
+        for (std::size_t k = 0; k < injectors.size(); ++k) {
+            const InjectorSettings& injector = injectors[k];
             const double radius = std::max(injector.nozzle.radius, meanRadius);
-            const double area = std::numbers::pi * std::pow(radius, 2);
+            const double area = std::max(std::numbers::pi * std::pow(radius, 2), patchAreas_[k]);
             nozzleDensity = std::max(nozzleDensity, injector.injection.mode == InjectionMode::rate
                                                         ? injector.injection.rate / (area * speed)
                                                         : static_cast<double>(injector.count) /
@@ -531,7 +541,7 @@ SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
     analysis.timeStepGiven = scene.time.dt > 0;
     const double pilotStep =
         analysis.timeStepGiven ? scene.time.dt : provisionalTimeStep(scene, carrier);
-    PathEstimator estimator(scene);
+    PathEstimator estimator(scene, carrier);
     analysis.pilot =
         tracePilotPaths(scene, carrier, pilotStep, [&](const PilotStep& step) { estimator(step); });
     estimator.finish(analysis.pilot.steps * pilotStep);

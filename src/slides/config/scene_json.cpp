@@ -44,6 +44,10 @@ nlohmann::json injectorSettings(const InjectorSettings& injector) {
                          {"outerHalfAngle", injector.cone.outerHalfAngle},
                          {"speed", injector.cone.speed},
                          {"speedStandardDeviation", injector.cone.speedDeviation}};
+    if (injector.model == InjectionModel::patch)
+        entry["patch"] = {{"patch", injector.patch.name},
+                          {"velocity", injector.patch.velocity ? vec(*injector.patch.velocity)
+                                                               : nlohmann::json("(U·n) n")}};
     return entry;
 }
 

@@ -211,7 +211,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injectors.*", K::dictionary, "-", "-", {}, R::any, "One injector, named by its key."},
         {"injectors.*.model", K::word, "-", "disc", namesOf(injectionModelNames()), R::any,
          "disc: on the disc at the gas velocity plus crossSpanSpeed; cone: coneCoeffs' speed "
-         "along a direction uniform over the cone's band of directions; file: the rows of file."},
+         "along a direction uniform over the cone's band of directions; file: the rows of file; "
+         "patch: uniformly over a mesh patch's faces (patchCoeffs)."},
         {"injectors.*.centre", K::vector, "m", "(0 0 0)", {}, R::any,
          "Centre of the injector's disc (disc, cone)."},
         {"injectors.*.axis", K::vector, "-", "(1 0 0)", {}, R::any,
@@ -242,6 +243,13 @@ std::vector<KeyDeclaration> declareKeys() {
          "Mean speed.", noMinimum, maximumGasSpeed},
         {"injectors.*.coneCoeffs.speedStandardDeviation", K::scalar, "m/s", "0", {},
          R::nonNegative, "Standard deviation of a normally distributed speed; 0: fixed."},
+        {"injectors.*.patchCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Model patch (OpenFOAM's patchInjection): points uniform in area over the faces of a "
+         "patch of a 3-D mesh (carrier foamField)."},
+        {"injectors.*.patchCoeffs.patch", K::word, "-", "-", {}, R::any,
+         "The patch, by its name in constant/polyMesh/boundary."},
+        {"injectors.*.patchCoeffs.velocity", K::vector, "m/s", "-", {}, R::any,
+         "Start velocity; not given: the gas velocity's part normal to the patch, (U·n) n."},
         {"injectors.*.file", K::word, "-", "-", {}, R::any,
          "Model file: a CSV whose header names its columns (x y z u v w, d or r; optional t, "
          "wx wy wz, T), "

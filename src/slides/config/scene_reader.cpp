@@ -349,6 +349,30 @@ void readRateAndCount(const KeyReader& keys, const std::string& base, InjectorSe
     injector.count = static_cast<long>(total);
 }
 
+/// The mesh patch `base.patch` names, for `what` (a patch surface or injector, asked for by the
+/// key kindKey): one in the foamField carrier's constant/polyMesh/boundary, of a 3-D mesh.
+FoamPatch readMeshPatch(const KeyReader& keys, const std::string& base, const std::string& kindKey,
+                        const std::string& what, const Scene& scene) {
+    if (scene.carrier.type != CarrierType::foamField)
+        keys.fail(kindKey, what + " needs carrier type foamField (a mesh)");
+    keys.require(base + ".patch", "for " + what);
+    const std::string name = keys.word(base + ".patch");
+    const std::vector<FoamPatch> patches = readFoamBoundary(scene.caseDirectory);
+    std::string names;
+    for (const FoamPatch& patch : patches) {
+        if (patch.type == PatchType::wedge || patch.type == PatchType::empty)
+            keys.fail(kindKey, what + " needs a 3-D mesh; patch " + patch.name +
+                                   " is a wedge or empty patch");
+        names += " " + patch.name;
+    }
+    const auto found = std::find_if(patches.begin(), patches.end(),
+                                    [&](const FoamPatch& patch) { return patch.name == name; });
+    if (found == patches.end())
+        keys.fail(base + ".patch",
+                  "no patch '" + name + "' in constant/polyMesh/boundary; patches:" + names);
+    return *found;
+}
+
 /// The injectors of `injectors {}`, their ids in blocks in the order written.
 std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Dictionary& top,
                                             const Scene& scene) {
@@ -391,6 +415,16 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
             injector.injection.crossSpanSpeed = keys.scalar(base + ".crossSpanSpeed");
         } else if (keys.has(base + ".crossSpanSpeed")) {
             keys.fail(base + ".crossSpanSpeed", "only model disc adds a cross-span speed");
+        }
+        if (injector.model == InjectionModel::patch) {
+            const std::string coeffs = base + ".patchCoeffs";
+            keys.require(coeffs, "for model patch");
+            injector.patch.name =
+                readMeshPatch(keys, coeffs, base + ".model", "a patch injector", scene).name;
+            if (keys.has(coeffs + ".velocity"))
+                injector.patch.velocity = keys.vector(coeffs + ".velocity");
+        } else if (keys.has(base + ".patchCoeffs")) {
+            keys.fail(base + ".patchCoeffs", "only model patch takes patchCoeffs");
         }
         if (injector.model == InjectionModel::cone) {
             const std::string cone = base + ".coneCoeffs";
@@ -623,32 +657,15 @@ void refuseGasTerms(const KeyReader& keys, Scene& scene) {
             automatic.unavailable = "needs a carrier gas";
 }
 
-/// The mesh patch a surface of type patch is: one of type wall or patch in the foamField
-/// carrier's constant/polyMesh/boundary, of a 3-D mesh.
+/// The mesh patch a surface of type patch is: one of type wall or patch, not a symmetry plane.
 std::string readPatchName(const KeyReader& keys, const std::string& base, const Scene& scene) {
-    if (scene.carrier.type != CarrierType::foamField)
-        keys.fail(base + ".type", "a patch surface needs carrier type foamField (a mesh)");
-    keys.require(base + ".patch", "for a surface of type patch");
     if (keys.has(base + ".point") || keys.has(base + ".normal"))
         keys.fail(base + ".type", "a patch surface takes its shape from the mesh: no point or "
                                   "normal");
-    const std::string name = keys.word(base + ".patch");
-    const std::vector<FoamPatch> patches = readFoamBoundary(scene.caseDirectory);
-    std::string names;
-    for (const FoamPatch& patch : patches) {
-        if (patch.type == PatchType::wedge || patch.type == PatchType::empty)
-            keys.fail(base + ".type", "patch surfaces need a 3-D mesh; patch " + patch.name +
-                                          " is a wedge or empty patch");
-        names += " " + patch.name;
-    }
-    const auto found = std::find_if(patches.begin(), patches.end(),
-                                    [&](const FoamPatch& patch) { return patch.name == name; });
-    if (found == patches.end())
-        keys.fail(base + ".patch",
-                  "no patch '" + name + "' in constant/polyMesh/boundary; patches:" + names);
-    if (found->type == PatchType::symmetry)
-        keys.fail(base + ".patch", "patch '" + name + "' is a symmetry plane, not a wall");
-    return name;
+    const FoamPatch patch = readMeshPatch(keys, base, base + ".type", "a patch surface", scene);
+    if (patch.type == PatchType::symmetry)
+        keys.fail(base + ".patch", "patch '" + patch.name + "' is a symmetry plane, not a wall");
+    return patch.name;
 }
 
 CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {

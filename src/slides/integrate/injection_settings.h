@@ -14,6 +14,7 @@
 //         gunB { model cone; centre (0 0.02 0); axis (1 -0.2 0); count 2000; rate 4e4;
 //                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
 //         rows { model file; file "constant/particles.csv"; }
+//         inlet { model patch; patchCoeffs { patch inlet; } count 1000; rate 1e5; }
 //     }
 //
 // How to add a mode, model or distribution: an enumerator, its name in its table below, its key
@@ -28,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -118,17 +120,18 @@ struct InjectionSettings {
     double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
 };
 
-enum class InjectionModel { disc, cone, file };
+enum class InjectionModel { disc, cone, file, patch };
 
 struct InjectionModelName {
     InjectionModel value;
     std::string_view name;
 };
 
-constexpr std::array<InjectionModelName, 3> injectionModelNames() {
+constexpr std::array<InjectionModelName, 4> injectionModelNames() {
     return {{{InjectionModel::disc, "disc"},
              {InjectionModel::cone, "cone"},
-             {InjectionModel::file, "file"}}};
+             {InjectionModel::file, "file"},
+             {InjectionModel::patch, "patch"}}};
 }
 
 /// A cone of directions about the injector's axis: polar angle θ between inner and outer half
@@ -138,6 +141,13 @@ struct ConeSettings {
     double outerHalfAngle = 0; ///< [rad]
     double speed = 0;          ///< mean speed along the drawn direction [m/s]
     double speedDeviation = 0; ///< standard deviation of a normal speed [m/s]; 0: fixed
+};
+
+/// Model patch (OpenFOAM's patchInjection): uniformly over the faces of a mesh patch.
+struct PatchInjectionSettings {
+    std::string name; ///< in constant/polyMesh/boundary
+    std::optional<Vec3>
+        velocity; ///< given [m/s]; none: the gas velocity's part normal to the patch
 };
 
 /// One particle given by a row of a file (integrate/particle_file.h).
@@ -163,6 +173,7 @@ struct InjectorSettings {
     RadiusDistribution radius;
     double startTime = 0; ///< [s], the first particle's injection time
     ConeSettings cone;
+    PatchInjectionSettings patch;
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T

@@ -34,7 +34,10 @@ Injector::Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
 Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
     : settings_(settings), radius_(settings.radius),
       startsAtGasVelocity_(settings.model == InjectionModel::disc),
+      startsAtNormalGasVelocity_(settings.model == InjectionModel::patch &&
+                                 !settings.patch.velocity),
       avoidOverlap_(avoidOverlap && settings.model != InjectionModel::file &&
+                    settings.model != InjectionModel::patch &&
                     settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
@@ -54,23 +57,24 @@ long Injector::dueBefore(double until) const {
     return due;
 }
 
-void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
-                         Vec3& addedVelocity) const {
+Injector::Start Injector::drawStart(ParticleId id, std::uint32_t attempt) const {
     const InjectorSettings& settings = settings_;
     if (settings.model == InjectionModel::file) {
         const ParticleRow& row = settings.rows[id - settings.firstId];
-        position = row.position;
-        addedVelocity = row.velocity;
-        return;
+        return {row.position, row.velocity, Vec3::Zero()};
     }
     const InjectionSettings& injection = settings.injection;
     RandomStream random(injection.seed, id, RandomPurpose::injection, attempt);
     if (injection.mode == InjectionMode::lattice) {
-        position = latticeSite(injection, id);
+        Vec3 added;
         const double spread = injection.latticeVelocitySpread;
-        for (int axis = 0; axis < 3; ++axis)
-            addedVelocity[axis] = spread * (2 * random.uniform() - 1);
-        return;
+        for (int axis = 0; axis < 3; ++axis) added[axis] = spread * (2 * random.uniform() - 1);
+        return {latticeSite(injection, id), added, Vec3::Zero()};
+    }
+    if (settings.model == InjectionModel::patch) {
+        const double uniformArea = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
+        const PatchSampler::Point point = patch_->draw(uniformArea, u1, u2);
+        return {point.position, settings.patch.velocity.value_or(Vec3::Zero()), point.normal};
     }
     const JetNozzle& nozzle = settings.nozzle;
     const Vec3 across = nozzle.crossSpanDirection;
@@ -78,19 +82,21 @@ void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
     const double radialFraction = std::sqrt(random.uniform()); // uniform in disc area
     const double angle = 2.0 * std::numbers::pi * random.uniform();
     const double direction = 2.0 * std::numbers::pi * random.uniform();
-    position = nozzle.centre + nozzle.radius * radialFraction *
-                                   (std::cos(angle) * across + std::sin(angle) * other);
-    if (settings.model == InjectionModel::disc) {
-        addedVelocity =
-            injection.crossSpanSpeed * (std::cos(direction) * across + std::sin(direction) * other);
-        return;
-    }
+    const Vec3 position = nozzle.centre + nozzle.radius * radialFraction *
+                                              (std::cos(angle) * across + std::sin(angle) * other);
+    if (settings.model == InjectionModel::disc)
+        return {position,
+                injection.crossSpanSpeed *
+                    (std::cos(direction) * across + std::sin(direction) * other),
+                Vec3::Zero()};
     // Cone: the polar angle from a fresh uniform, the azimuth from `direction`'s.
     const ConeSettings& cone = settings.cone;
     const double polar = random.uniform();
     const double speed = cone.speed + cone.speedDeviation * random.normal();
-    addedVelocity = speed * coneDirection(cone, nozzle.axis, across, polar,
-                                          direction / (2.0 * std::numbers::pi));
+    return {position,
+            speed * coneDirection(cone, nozzle.axis, across, polar,
+                                  direction / (2.0 * std::numbers::pi)),
+            Vec3::Zero()};
 }
 
 void Injector::setStartStates(ParticleCloud& cloud, std::size_t from) const {
@@ -108,9 +114,14 @@ void Injector::setStartStates(ParticleCloud& cloud, std::size_t from) const {
 void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud) {
     positions_.resize(count);
     addedVelocities_.resize(count);
+    patchNormals_.resize(startsAtNormalGasVelocity_ ? count : 0);
+    const auto keep = [&](std::size_t k, const Start& start) {
+        positions_[k] = start.position;
+        addedVelocities_[k] = start.addedVelocity;
+        if (startsAtNormalGasVelocity_) patchNormals_[k] = start.patchNormal;
+    };
     if (!avoidOverlap_) {
-        for (std::size_t k = 0; k < count; ++k)
-            drawStart(first + k, 0, positions_[k], addedVelocities_[k]);
+        for (std::size_t k = 0; k < count; ++k) keep(k, drawStart(first + k, 0));
         return;
     }
     constexpr std::uint32_t attempts = 64;
@@ -126,7 +137,7 @@ void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleClo
             nearby_.emplace_back(cloud.position[i], cloud.radius[i]);
     for (std::size_t k = 0; k < count; ++k) {
         for (std::uint32_t attempt = 0; attempt < attempts; ++attempt) {
-            drawStart(first + k, attempt, positions_[k], addedVelocities_[k]);
+            keep(k, drawStart(first + k, attempt));
             const bool clear = std::none_of(nearby_.begin(), nearby_.end(), [&](const auto& other) {
                 const double contact = radii_[k] + other.second;
                 return (positions_[k] - other.first).squaredNorm() < contact * contact;
@@ -146,6 +157,8 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         ++last;
     if (last == first) return;
 
+    if (settings_.model == InjectionModel::patch && !patch_)
+        patch_.emplace(carrier.patchTriangles(settings_.patch.name));
     const auto count = static_cast<std::size_t>(last - first);
     const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
     radii_.resize(count);
@@ -162,13 +175,15 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         carrier.sampleFrom(positions_,
                            std::span(cloud.carrierLocation).subspan(cloud.size(), count), time,
                            CarrierNeeds{}, gas_);
-    } else if (startsAtGasVelocity_) {
+    } else if (startsAtGasVelocity_ || startsAtNormalGasVelocity_) {
         carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     }
     for (std::size_t k = 0; k < count; ++k) {
         const ParticleId id = firstId + k;
-        const Vec3 velocity = startsAtGasVelocity_ ? Vec3(gas_.velocity[k] + addedVelocities_[k])
-                                                   : addedVelocities_[k];
+        Vec3 velocity = addedVelocities_[k];
+        if (startsAtGasVelocity_) velocity += gas_.velocity[k];
+        if (startsAtNormalGasVelocity_)
+            velocity = gas_.velocity[k].dot(patchNormals_[k]) * patchNormals_[k];
         cloud.add(id, positions_[k], velocity, radii_[k]);
     }
     injected_ = last;
@@ -177,6 +192,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     if (finished()) {
         positions_ = {};
         addedVelocities_ = {};
+        patchNormals_ = {};
         radii_ = {};
         gas_ = CarrierSample{};
     }

@@ -7,16 +7,18 @@
 //   cone  on the disc (or its centre, radius 0) with speed s along a direction drawn uniformly
 //         over the band of the unit sphere between the inner and outer half-angle about the
 //         axis: cos θ uniform in [cos θ_out, cos θ_in], azimuth uniform (Archimedes' hat-box);
-//   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time.
+//   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time;
+//   patch uniformly over the faces of a mesh patch (integrate/patch_sampler.h), with the given
+//         velocity or the gas velocity's part normal to the patch, (U·n) n.
 //
 // With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
 // particle in flight or placed before it: the rule is that its start point is redrawn, from the
 // stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre lies
 // within the disc radius plus the two radii of the injector's centre; after 64 attempts (a disc
 // already full) it keeps the last draw. Without an overlap the first draw stands, as without
-// the rule. A file's rows and a lattice are placed as given. Each check runs over every particle
-// near the injector: cheap for rate injection (a few a step), quadratic in the count for many
-// particles injected at once (allAtStart).
+// the rule. A file's rows, a lattice and a patch's particles are placed as drawn. Each check runs
+// over every particle near the injector: cheap for rate injection (a few a step), quadratic in the
+// count for many particles injected at once (allAtStart).
 //
 // Particle firstId + k is injected at t_k = startTime + k / rate (or startTime; a file row's
 // time). Its radius, position and random velocity come from counter-based random streams keyed
@@ -31,7 +33,10 @@
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injection_settings.h"
+#include "slides/integrate/patch_sampler.h"
 #include "slides/integrate/size_distribution.h"
+
+#include <optional>
 
 namespace slides {
 
@@ -73,9 +78,14 @@ public:
     void setStartStates(ParticleCloud& cloud, std::size_t from) const;
 
 private:
-    /// The start position and the velocity added to the gas velocity (random, or the given one),
-    /// from the draw `attempt` of particle id.
-    void drawStart(ParticleId id, std::uint32_t attempt, Vec3& position, Vec3& addedVelocity) const;
+    /// Where a particle starts and with which velocity, before the gas is sampled there.
+    struct Start {
+        Vec3 position;
+        Vec3 addedVelocity; ///< added to the gas velocity (disc), or the velocity (cone, file)
+        Vec3 patchNormal;   ///< model patch: the normal the gas velocity is projected on
+    };
+    /// The start of particle id from its draw `attempt`.
+    Start drawStart(ParticleId id, std::uint32_t attempt) const;
     /// The starts of the new particles [first, first + count), each clear of the others near
     /// the injector (avoidOverlap_) or the first draw.
     void drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud);
@@ -83,10 +93,13 @@ private:
     InjectorSettings settings_;
     RadiusSampler radius_;
     bool startsAtGasVelocity_; ///< disc: gas velocity + random; cone, file: the given velocity
-    bool avoidOverlap_;        ///< redraw a start that overlaps a particle near the injector
+    bool startsAtNormalGasVelocity_; ///< patch without a velocity: (U·n) n
+    bool avoidOverlap_;              ///< redraw a start that overlaps a particle near the injector
     long injected_ = 0;
     std::vector<Vec3> positions_;
     std::vector<Vec3> addedVelocities_;
+    std::vector<Vec3> patchNormals_;
+    std::optional<PatchSampler> patch_; ///< model patch: its faces, from the carrier
     std::vector<double> radii_;
     std::vector<std::pair<Vec3, double>> nearby_; ///< centres and radii near the injector
     CarrierSample gas_;

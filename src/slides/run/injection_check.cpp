@@ -97,6 +97,7 @@ void requireInside(const Scene& scene, const CarrierField& carrier, std::span<co
 void requireInjectorInside(const Scene& scene, const CarrierField& carrier,
                            const InjectorSettings& injector) {
     const std::string base = "injectors." + injector.name;
+    if (injector.model == InjectionModel::patch) return; // on the mesh's own faces
     if (injector.model == InjectionModel::file) {
         const std::size_t stride = std::max<std::size_t>(1, injector.rows.size() / latticeSamples);
         std::vector<Vec3> points;
