@@ -14,6 +14,7 @@
 //         gunB { model cone; centre (0 0.02 0); axis (1 -0.2 0); count 2000; rate 4e4;
 //                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
 //         rows { model file; file "constant/particles.csv"; }
+//         bed { model ensemble; count 500; ensembleCoeffs { ... } }  // integrate/ensemble.h
 //     }
 //
 // How to add a mode, model or distribution: an enumerator, its name in its table below, its key
@@ -23,6 +24,7 @@
 
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
+#include "slides/integrate/ensemble.h"
 #include "slides/physics/contact_pair.h"
 
 #include <array>
@@ -118,17 +120,18 @@ struct InjectionSettings {
     double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
 };
 
-enum class InjectionModel { disc, cone, file };
+enum class InjectionModel { disc, cone, file, ensemble };
 
 struct InjectionModelName {
     InjectionModel value;
     std::string_view name;
 };
 
-constexpr std::array<InjectionModelName, 3> injectionModelNames() {
+constexpr std::array<InjectionModelName, 4> injectionModelNames() {
     return {{{InjectionModel::disc, "disc"},
              {InjectionModel::cone, "cone"},
-             {InjectionModel::file, "file"}}};
+             {InjectionModel::file, "file"},
+             {InjectionModel::ensemble, "ensemble"}}};
 }
 
 /// A cone of directions about the injector's axis: polar angle θ between inner and outer half
@@ -166,6 +169,11 @@ struct InjectorSettings {
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T
+    EnsembleSettings ensemble;        ///< model ensemble: the packing its rows come from
+    /// Its particles are its rows: a file's, or an ensemble's packing (at rest, at time 0).
+    bool givesRows() const {
+        return model == InjectionModel::file || model == InjectionModel::ensemble;
+    }
 };
 
 /// The index of the injector whose id block holds id, from the blocks' first ids (ascending).

@@ -34,13 +34,13 @@ Injector::Injector(const InjectionSettings& injection, const JetNozzle& nozzle,
 Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
     : settings_(settings), radius_(settings.radius),
       startsAtGasVelocity_(settings.model == InjectionModel::disc),
-      avoidOverlap_(avoidOverlap && settings.model != InjectionModel::file &&
+      avoidOverlap_(avoidOverlap && !settings.givesRows() &&
                     settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
     const auto k = id - settings_.firstId;
     const double start = settings_.startTime;
-    if (settings_.model == InjectionModel::file) return start + settings_.rows[k].time;
+    if (settings_.givesRows()) return start + settings_.rows[k].time;
     return settings_.injection.mode == InjectionMode::rate
                ? start + static_cast<double>(k) / settings_.injection.rate
                : start;
@@ -57,7 +57,7 @@ long Injector::dueBefore(double until) const {
 void Injector::drawStart(ParticleId id, std::uint32_t attempt, Vec3& position,
                          Vec3& addedVelocity) const {
     const InjectorSettings& settings = settings_;
-    if (settings.model == InjectionModel::file) {
+    if (settings.givesRows()) {
         const ParticleRow& row = settings.rows[id - settings.firstId];
         position = row.position;
         addedVelocity = row.velocity;
@@ -150,9 +150,8 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
     radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)
-        radii_[k] = settings_.model == InjectionModel::file
-                        ? settings_.rows[firstId + k - settings_.firstId].radius
-                        : radius_.draw(settings_.injection.seed, firstId + k);
+        radii_[k] = settings_.givesRows() ? settings_.rows[firstId + k - settings_.firstId].radius
+                                          : radius_.draw(settings_.injection.seed, firstId + k);
     drawStarts(firstId, count, cloud);
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
     // step walks from there instead of searching again.

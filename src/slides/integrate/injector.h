@@ -7,7 +7,8 @@
 //   cone  on the disc (or its centre, radius 0) with speed s along a direction drawn uniformly
 //         over the band of the unit sphere between the inner and outer half-angle about the
 //         axis: cos θ uniform in [cos θ_out, cos θ_in], azimuth uniform (Archimedes' hat-box);
-//   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time.
+//   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time;
+//   ensemble  the rows of a packing (integrate/ensemble.h), at rest, all at the start time.
 //
 // With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
 // particle in flight or placed before it: the rule is that its start point is redrawn, from the
