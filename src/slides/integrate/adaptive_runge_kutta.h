@@ -14,9 +14,8 @@
 // at least 0.2 times h, and never beyond the end of the global step: particles sub-step within
 // the global step, so frames and collisions see them all at its end.
 //
-// A step function over one particle's (x, v) and its right-hand side; the stepper's batch
-// (the carrier sampled once per stage for the particles still sub-stepping) and the
-// `time.integrator` row are still to come.
+// A step function over one particle's (x, v) and its right-hand side; over a batch in a carrier:
+// integrate/adaptive_runge_kutta_batch.h. The `time.integrator` row is still to come.
 #pragma once
 
 #include "slides/core/vector.h"
