@@ -6,8 +6,9 @@
 //
 // Reference: Section 4.3, Algorithm 3 (time-stepped, as the reference implements it, rather
 // than event-driven). Time is in units of R̄/v̄ (mean radius over rms speed component); a step
-// of 0.02 moves a sphere about 2 % of its radius. Each step: move, grow, then sweeps over the
-// pairs in contact (integrate/packing_grid.h) push overlapping spheres apart along their line of
+// of 0.02 moves a sphere about 3 % of its radius. Each step: move, grow, list the pairs within
+// their contact distance plus a skin of 0.1 R̄ (integrate/packing_grid.h), then sweeps over them
+// push overlapping spheres apart along their line of
 // centres, in inverse proportion to their masses (∝ R³), and reverse their normal velocity
 // relative to the growing surfaces (u_n' = 2γ(R_i + R_j) − u_n, Eq. 4.30–4.31 with the growth
 // as the added speed), until no overlap exceeds 1e-4 of a contact distance; then the speeds are
@@ -16,7 +17,7 @@
 // the packing is jammed and stops short of its radii. It ends grown to 1 + 1e-6 of the radii
 // with overlaps below 1e-9 of a contact distance: at the full radii no two spheres overlap.
 //
-//     ensembleCoeffs { method lubachevskyStillinger; growthRate 0.02; shape box; ... }
+//     ensembleCoeffs { method lubachevskyStillinger; growthRate 0.2; shape box; ... }
 #pragma once
 
 #include "slides/core/random.h"
