@@ -43,6 +43,9 @@ TEST(NameTables, TurbulenceScalings) { expectRoundTrip(turbulenceScalingNames())
 TEST(NameTables, FoamInterpolations) { expectRoundTrip(foamInterpolationNames()); }
 TEST(NameTables, RadiusDistributions) { expectRoundTrip(radiusDistributionNames()); }
 TEST(NameTables, InjectionModes) { expectRoundTrip(injectionModeNames()); }
+TEST(NameTables, InjectionModels) { expectRoundTrip(injectionModelNames()); }
+TEST(NameTables, PackingMethods) { expectRoundTrip(packingMethodNames()); }
+TEST(NameTables, PackingShapes) { expectRoundTrip(packingShapeNames()); }
 TEST(NameTables, DragLaws) { expectRoundTrip(dragModelNames()); }
 TEST(NameTables, HistoryModels) { expectRoundTrip(historyModelNames()); }
 TEST(NameTables, LiftModels) { expectRoundTrip(liftModelNames()); }

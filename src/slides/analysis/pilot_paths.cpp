@@ -24,8 +24,7 @@ Scene pilotScene(const Scene& scene, double dt) {
         injector.count = std::min(injector.count, share);
         injector.injection.mode = InjectionMode::allAtStart;
         injector.startTime = 0;
-        if (injector.model == InjectionModel::file)
-            injector.rows.resize(static_cast<std::size_t>(injector.count));
+        if (injector.givesRows()) injector.rows.resize(static_cast<std::size_t>(injector.count));
         for (ParticleRow& row : injector.rows) row.time = 0;
         pilot.particles.count += injector.count;
     }

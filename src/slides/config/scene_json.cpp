@@ -34,6 +34,16 @@ nlohmann::json injectorSettings(const InjectorSettings& injector) {
                             {"axis", vec(injector.nozzle.axis)},
                             {"radius", injector.nozzle.radius}};
     if (injector.model == InjectionModel::file) return entry;
+    if (injector.model == InjectionModel::ensemble) {
+        PackedEnsemble packed;
+        for (const ParticleRow& row : injector.rows) packed.radii.push_back(row.radius);
+        packed.centres.resize(packed.radii.size());
+        const PackingRegion& region = injector.ensemble.region;
+        entry["ensemble"] = {{"method", nameOf(packingMethodNames(), injector.ensemble.method)},
+                             {"shape", nameOf(packingShapeNames(), region.shape)},
+                             {"volumeFraction", packed.volumeFraction(region.volume())}};
+        return entry;
+    }
     entry["mode"] = nameOf(injectionModeNames(), injector.injection.mode);
     entry["rate"] = injector.injection.rate;
     entry["radiusDistribution"] = radiusDistribution(injector.radius);

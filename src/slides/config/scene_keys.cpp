@@ -212,7 +212,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injectors.*.model", K::word, "-", "disc", namesOf(injectionModelNames()), R::any,
          "disc: on the disc at the gas velocity plus crossSpanSpeed; cone: coneCoeffs' speed "
          "along a direction uniform over the cone's band of directions; file: the rows of file; "
-         "patch: uniformly over a mesh patch's faces (patchCoeffs)."},
+         "patch: uniformly over a mesh patch's faces (patchCoeffs); "
+         "ensemble: a packing at rest (ensembleCoeffs)."},
         {"injectors.*.centre", K::vector, "m", "(0 0 0)", {}, R::any,
          "Centre of the injector's disc (disc, cone)."},
         {"injectors.*.axis", K::vector, "-", "(1 0 0)", {}, R::any,
@@ -255,6 +256,29 @@ std::vector<KeyDeclaration> declareKeys() {
          "wx wy wz, T), "
          "a particle a row in order of t (integrate/particle_file.h); or a previous run's "
          "particles.h5 (its arrivals). Relative to the case directory."},
+        {"injectors.*.ensembleCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Model ensemble: count particles packed at rest in a box or a cylinder (Section 4.3; "
+         "integrate/ensemble.h)."},
+        {"injectors.*.ensembleCoeffs.method", K::word, "-", "randomSequentialAddition",
+         namesOf(packingMethodNames()), R::any,
+         "randomSequentialAddition (Widom, Fig. 4.1): up to saturation, φ ≈ 0.384 for equal "
+         "spheres; lubachevskyStillinger (growth, Eq. 4.30–4.32, Algorithm 3): up to jamming, "
+         "φ ≈ 0.63."},
+        {"injectors.*.ensembleCoeffs.shape", K::word, "-", "box", namesOf(packingShapeNames()),
+         R::any, "box: min to max; cylinder: the injector's centre (its base), axis and radius, "
+                 "and length."},
+        {"injectors.*.ensembleCoeffs.min", K::vector, "m", "-", {}, R::any,
+         "Lower corner of the box."},
+        {"injectors.*.ensembleCoeffs.max", K::vector, "m", "-", {}, R::any,
+         "Upper corner of the box."},
+        {"injectors.*.ensembleCoeffs.periodic", K::boolean, "-", "no", {}, R::any,
+         "Box faces periodic (spheres may cross them, clear of the images: a bulk sample); no: "
+         "walls, every sphere inside."},
+        {"injectors.*.ensembleCoeffs.length", K::scalar, "m", "-", {}, R::positive,
+         "Length of the cylinder along the axis."},
+        {"injectors.*.ensembleCoeffs.growthRate", K::scalar, "-", "0.2", {}, R::positive,
+         "lubachevskyStillinger: γ of dR_i/dt = γ R_i (Eq. 4.32), per unit time R̄/v̄; slower "
+         "growth packs a little denser before jamming."},
         {"injectors.*.radiusDistribution", K::dictionary, "-", "-", {}, R::any,
          "Its own radius distribution (disc, cone), with the keys of "
          "particles.radiusDistribution; default that one."},

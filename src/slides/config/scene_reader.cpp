@@ -6,6 +6,7 @@
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
+#include "slides/integrate/ensemble.h"
 #include "slides/integrate/particle_file.h"
 #include "slides/integrate/size_distribution.h"
 
@@ -373,6 +374,67 @@ FoamPatch readMeshPatch(const KeyReader& keys, const std::string& base, const st
     return *found;
 }
 
+/// An injector of model ensemble: its packing (integrate/ensemble.h) as its rows, at rest, all at
+/// its start time; refused when the method cannot place them all.
+void packInjector(const KeyReader& keys, const std::string& base, InjectorSettings& injector) {
+    const std::string coeffs = base + ".ensembleCoeffs";
+    keys.require(coeffs, "for model ensemble");
+    keys.require(base + ".count", "for model ensemble");
+    if (keys.has(base + ".mode") && keys.word(base + ".mode") != "allAtStart")
+        keys.fail(base + ".mode", "an ensemble's particles all start at startTime");
+    EnsembleSettings& ensemble = injector.ensemble;
+    ensemble.method = *valueNamed(packingMethodNames(), keys.word(coeffs + ".method"));
+    ensemble.growthRate = keys.scalar(coeffs + ".growthRate");
+    PackingRegion& region = ensemble.region;
+    region.shape = *valueNamed(packingShapeNames(), keys.word(coeffs + ".shape"));
+    if (region.shape == PackingShape::box) {
+        keys.require(coeffs + ".min", "for shape box");
+        keys.require(coeffs + ".max", "for shape box");
+        region.lower = keys.vector(coeffs + ".min");
+        region.upper = keys.vector(coeffs + ".max");
+        region.periodic = keys.boolean(coeffs + ".periodic");
+        if (!((region.upper - region.lower).array() > 0).all())
+            keys.fail(coeffs + ".max", "must exceed min in every component");
+    } else {
+        keys.require(coeffs + ".length", "for shape cylinder");
+        region.base = injector.nozzle.centre;
+        region.axis = injector.nozzle.axis;
+        region.radius = injector.nozzle.radius;
+        region.length = keys.scalar(coeffs + ".length");
+        if (!(region.radius > 0 && region.length > 0))
+            keys.fail(base + ".radius", "a cylinder needs radius > 0 and length > 0");
+        if (keys.has(coeffs + ".periodic"))
+            keys.fail(coeffs + ".periodic", "only a box is periodic");
+    }
+    const RadiusSampler sampler(injector.radius);
+    std::vector<double> radii(static_cast<std::size_t>(injector.count));
+    for (std::size_t k = 0; k < radii.size(); ++k)
+        radii[k] = sampler.draw(injector.injection.seed, injector.firstId + k);
+    PackedEnsemble packed;
+    try {
+        packed = packEnsemble(ensemble, radii, injector.injection.seed, injector.firstId);
+    } catch (const std::length_error& tooLarge) {
+        keys.fail(coeffs, std::string(tooLarge.what()));
+    }
+    if (!packed.complete) {
+        std::ostringstream reason;
+        reason << "the " << injector.count
+               << " particles do not fit: " << nameOf(packingMethodNames(), ensemble.method)
+               << " placed " << packed.centres.size() << " at volume fraction "
+               << packed.volumeFraction(region.volume())
+               << (ensemble.method == PackingMethod::randomSequentialAddition
+                       ? " (random addition saturates near 0.38; lubachevskyStillinger packs "
+                         "up to about 0.63)"
+                       : " (jammed)");
+        keys.fail(base + ".count", reason.str());
+    }
+    injector.rows.resize(radii.size());
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        injector.rows[k].position = packed.centres[k];
+        injector.rows[k].radius = packed.radii[k];
+    }
+}
+
 /// The injectors of `injectors {}`, their ids in blocks in the order written.
 std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Dictionary& top,
                                             const Scene& scene) {
@@ -403,6 +465,14 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
             const std::filesystem::path file = keys.word(base + ".file");
             readParticleFile(file.is_absolute() ? file : scene.caseDirectory / file, injector);
             injector.count = static_cast<long>(injector.rows.size());
+        } else if (injector.model == InjectionModel::ensemble) {
+            injector.injection.mode = InjectionMode::allAtStart;
+            injector.count = keys.integer(base + ".count");
+            injector.radius = keys.has(base + ".radiusDistribution")
+                                  ? readRadiusDistribution(keys, base + ".radiusDistribution.",
+                                                           scene.caseDirectory)
+                                  : scene.particles.radius;
+            packInjector(keys, base, injector);
         } else {
             injector.injection.mode = *valueNamed(injectionModeNames(), keys.word(base + ".mode"));
             readRateAndCount(keys, base, injector);
@@ -439,6 +509,8 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
         } else if (keys.has(base + ".coneCoeffs")) {
             keys.fail(base + ".coneCoeffs", "only model cone takes coneCoeffs");
         }
+        if (injector.model != InjectionModel::ensemble && keys.has(base + ".ensembleCoeffs"))
+            keys.fail(base + ".ensembleCoeffs", "only model ensemble takes ensembleCoeffs");
         firstId += static_cast<std::uint64_t>(injector.count);
         injectors.push_back(std::move(injector));
     }

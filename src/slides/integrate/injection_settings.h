@@ -15,6 +15,7 @@
 //                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
 //         rows { model file; file "constant/particles.csv"; }
 //         inlet { model patch; patchCoeffs { patch inlet; } count 1000; rate 1e5; }
+//         bed { model ensemble; count 500; ensembleCoeffs { ... } }  // integrate/ensemble.h
 //     }
 //
 // How to add a mode, model or distribution: an enumerator, its name in its table below, its key
@@ -24,6 +25,7 @@
 
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/vector.h"
+#include "slides/integrate/ensemble.h"
 #include "slides/physics/contact_pair.h"
 
 #include <array>
@@ -120,18 +122,19 @@ struct InjectionSettings {
     double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
 };
 
-enum class InjectionModel { disc, cone, file, patch };
+enum class InjectionModel { disc, cone, file, patch, ensemble };
 
 struct InjectionModelName {
     InjectionModel value;
     std::string_view name;
 };
 
-constexpr std::array<InjectionModelName, 4> injectionModelNames() {
+constexpr std::array<InjectionModelName, 5> injectionModelNames() {
     return {{{InjectionModel::disc, "disc"},
              {InjectionModel::cone, "cone"},
              {InjectionModel::file, "file"},
-             {InjectionModel::patch, "patch"}}};
+             {InjectionModel::patch, "patch"},
+             {InjectionModel::ensemble, "ensemble"}}};
 }
 
 /// A cone of directions about the injector's axis: polar angle θ between inner and outer half
@@ -177,6 +180,11 @@ struct InjectorSettings {
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T
+    EnsembleSettings ensemble;        ///< model ensemble: the packing its rows come from
+    /// Its particles are its rows: a file's, or an ensemble's packing (at rest, at time 0).
+    bool givesRows() const {
+        return model == InjectionModel::file || model == InjectionModel::ensemble;
+    }
 };
 
 /// The index of the injector whose id block holds id, from the blocks' first ids (ascending).

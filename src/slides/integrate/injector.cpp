@@ -36,14 +36,14 @@ Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
       startsAtGasVelocity_(settings.model == InjectionModel::disc),
       startsAtNormalGasVelocity_(settings.model == InjectionModel::patch &&
                                  !settings.patch.velocity),
-      avoidOverlap_(avoidOverlap && settings.model != InjectionModel::file &&
+      avoidOverlap_(avoidOverlap && !settings.givesRows() &&
                     settings.model != InjectionModel::patch &&
                     settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
     const auto k = id - settings_.firstId;
     const double start = settings_.startTime;
-    if (settings_.model == InjectionModel::file) return start + settings_.rows[k].time;
+    if (settings_.givesRows()) return start + settings_.rows[k].time;
     return settings_.injection.mode == InjectionMode::rate
                ? start + static_cast<double>(k) / settings_.injection.rate
                : start;
@@ -59,7 +59,7 @@ long Injector::dueBefore(double until) const {
 
 Injector::Start Injector::drawStart(ParticleId id, std::uint32_t attempt) const {
     const InjectorSettings& settings = settings_;
-    if (settings.model == InjectionModel::file) {
+    if (settings.givesRows()) {
         const ParticleRow& row = settings.rows[id - settings.firstId];
         return {row.position, row.velocity, Vec3::Zero()};
     }
@@ -163,9 +163,8 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
     const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
     radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)
-        radii_[k] = settings_.model == InjectionModel::file
-                        ? settings_.rows[firstId + k - settings_.firstId].radius
-                        : radius_.draw(settings_.injection.seed, firstId + k);
+        radii_[k] = settings_.givesRows() ? settings_.rows[firstId + k - settings_.firstId].radius
+                                          : radius_.draw(settings_.injection.seed, firstId + k);
     drawStarts(firstId, count, cloud);
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
     // step walks from there instead of searching again.

@@ -10,6 +10,7 @@
 //   file  the rows of a file (integrate/particle_file.h): position, velocity, radius, time;
 //   patch uniformly over the faces of a mesh patch (integrate/patch_sampler.h), with the given
 //         velocity or the gas velocity's part normal to the patch, (U·n) n.
+//   ensemble  the rows of a packing (integrate/ensemble.h), at rest, all at the start time.
 //
 // With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
 // particle in flight or placed before it: the rule is that its start point is redrawn, from the

@@ -98,13 +98,15 @@ void requireInjectorInside(const Scene& scene, const CarrierField& carrier,
                            const InjectorSettings& injector) {
     const std::string base = "injectors." + injector.name;
     if (injector.model == InjectionModel::patch) return; // on the mesh's own faces
-    if (injector.model == InjectionModel::file) {
+    if (injector.givesRows()) {
         const std::size_t stride = std::max<std::size_t>(1, injector.rows.size() / latticeSamples);
         std::vector<Vec3> points;
         for (std::size_t k = 0; k < injector.rows.size(); k += stride)
             points.push_back(injector.rows[k].position);
-        requireInside(scene, carrier, points, base + ".file",
-                      "the " + std::to_string(injector.rows.size()) + " particles of the file");
+        const bool file = injector.model == InjectionModel::file;
+        requireInside(scene, carrier, points, base + (file ? ".file" : ".ensembleCoeffs"),
+                      "the " + std::to_string(injector.rows.size()) + " particles of the " +
+                          (file ? "file" : "ensemble"));
         return;
     }
     std::ostringstream disc;
