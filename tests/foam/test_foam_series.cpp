@@ -50,7 +50,8 @@ fs::path writeSeries(const std::string& name, double interval, int count) {
         fs::create_directories(directory / time);
         const double u = amplitude * std::sin(2 * pi * frequency * n * interval);
         std::ofstream(directory / time / "U")
-            << std::setprecision(17) << "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
+            << std::setprecision(17)
+            << "FoamFile { version 2.0; format ascii; class volVectorField; object U; }\n"
                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform ("
             << u << " 0 0);\nboundaryField { \".*\" { type fixedValue; value uniform (" << u
             << " 0 0); } }\n";

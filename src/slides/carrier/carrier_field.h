@@ -27,7 +27,7 @@ struct CarrierNeeds {
     bool velocityGradient = false; ///< ∇U: fluid acceleration, lift
     bool turbulence = false;       ///< k and ε: turbulent eddy sampling
     bool temperature = false;      ///< T: convective heating
-    bool timeDerivative = false;   ///< ∂U/∂t: DU/Dt of an unsteady carrier (asked only if !steady())
+    bool timeDerivative = false;   ///< ∂U/∂t: DU/Dt of an unsteady carrier (never of a steady)
 };
 
 /// One batch of samples, one entry per point, in the order of the points (structure of arrays).
@@ -37,7 +37,7 @@ struct CarrierSample {
     std::vector<double> turbulentKineticEnergy; ///< k [m²/s²], filled when needs.turbulence
     std::vector<double> dissipationRate;        ///< ε [m²/s³], filled when needs.turbulence
     std::vector<double> temperature;            ///< T [K], filled when needs.temperature
-    std::vector<Vec3> velocityTimeDerivative;   ///< ∂U/∂t [m/s²], filled when needs.timeDerivative
+    std::vector<Vec3> velocityTimeDerivative;   ///< ∂U/∂t [m/s²], when needs.timeDerivative
 
     void resize(std::size_t count, CarrierNeeds needs) {
         velocity.resize(count);
