@@ -46,6 +46,7 @@ PilotSummary tracePilotPaths(const Scene& scene, const CarrierField& carrier, do
     Stepper stepper(pilot, carrier);
     CarrierNeeds needs = carrier.provides();
     needs.velocityGradient = true;
+    needs.timeDerivative = !carrier.steady();
 
     PilotStep step;
     CarrierSample gas;
@@ -80,6 +81,8 @@ PilotSummary tracePilotPaths(const Scene& scene, const CarrierField& carrier, do
                                      : Vec3((point.velocity - previous->second) / step.h);
             point.gasVelocity = gas.velocity[i];
             point.gasVelocityGradient = gas.velocityGradient[i];
+            point.gasTimeDerivative =
+                needs.timeDerivative ? gas.velocityTimeDerivative[i] : Vec3::Zero();
             point.turbulentEnergy = needs.turbulence ? gas.turbulentKineticEnergy[i] : 0;
             point.dissipationRate = needs.turbulence ? gas.dissipationRate[i] : 0;
             point.gasTemperature = needs.temperature ? gas.temperature[i] : scene.fluid.temperature;

@@ -26,6 +26,7 @@ struct PathPoint {
     Vec3 acceleration;           ///< dv/dt over the step [m/s²]
     Vec3 gasVelocity;            ///< U [m/s]
     Mat3 gasVelocityGradient;    ///< dU_i/dx_j [1/s]
+    Vec3 gasTimeDerivative;      ///< ∂U/∂t [m/s²], 0 for a steady carrier
     double turbulentEnergy = 0;  ///< k [m²/s²], 0 when the carrier has none
     double dissipationRate = 0;  ///< ε [m²/s³]
     double gasTemperature = 0;   ///< T [K]: the carrier's, else fluid.temperature

@@ -182,7 +182,8 @@ void PathEstimator::visitPoint(const PathPoint& point, const PilotStep& step) {
 
     // Forces of Eq. 3.3 and Sec. 3.4 per particle mass, and the deviations they drive.
     const Mat3& gradient = point.gasVelocityGradient;
-    const Vec3 fluidAcceleration = steadyFluidAcceleration(point.gasVelocity, gradient);
+    const Vec3 fluidAcceleration =
+        slides::fluidAcceleration(point.gasVelocity, gradient, point.gasTimeDerivative);
     const Vec3 fluidVorticity = vorticity(gradient);
     track.spin =
         relaxSpin(track.spin, fluidVorticity,

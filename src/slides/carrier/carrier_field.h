@@ -27,6 +27,7 @@ struct CarrierNeeds {
     bool velocityGradient = false; ///< ∇U: fluid acceleration, lift
     bool turbulence = false;       ///< k and ε: turbulent eddy sampling
     bool temperature = false;      ///< T: convective heating
+    bool timeDerivative = false;   ///< ∂U/∂t: DU/Dt of an unsteady carrier (never of a steady)
 };
 
 /// One batch of samples, one entry per point, in the order of the points (structure of arrays).
@@ -36,6 +37,7 @@ struct CarrierSample {
     std::vector<double> turbulentKineticEnergy; ///< k [m²/s²], filled when needs.turbulence
     std::vector<double> dissipationRate;        ///< ε [m²/s³], filled when needs.turbulence
     std::vector<double> temperature;            ///< T [K], filled when needs.temperature
+    std::vector<Vec3> velocityTimeDerivative;   ///< ∂U/∂t [m/s²], when needs.timeDerivative
 
     void resize(std::size_t count, CarrierNeeds needs) {
         velocity.resize(count);
@@ -43,6 +45,7 @@ struct CarrierSample {
         turbulentKineticEnergy.resize(needs.turbulence ? count : 0);
         dissipationRate.resize(needs.turbulence ? count : 0);
         temperature.resize(needs.temperature ? count : 0);
+        velocityTimeDerivative.resize(needs.timeDerivative ? count : 0);
     }
 };
 
@@ -74,6 +77,17 @@ public:
                             double time, CarrierNeeds needs, CarrierSample& out) const {
         (void)locations;
         sample(points, time, needs, out);
+    }
+
+    /// Whether the field is frozen in time: then sample() ignores t and ∂U/∂t = 0, and callers
+    /// neither ask for ∂U/∂t nor hold it. An unsteady carrier fills ∂U/∂t when asked.
+    virtual bool steady() const { return true; }
+
+    /// Makes an unsteady carrier ready to be sampled at times in [start, end] (a time series
+    /// holds the levels around them): called between batches, never during one.
+    virtual void holdInterval(double start, double end) const {
+        (void)start;
+        (void)end;
     }
 
     /// The optional fields the carrier can fill (the velocity and its gradient it always can).

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "slides/carrier/foam_interpolation.h"
+#include "slides/carrier/foam_series.h"
 #include "slides/carrier/jet_frame.h"
 #include "slides/carrier/jet_scalars.h"
 
@@ -28,18 +29,27 @@ struct FluidSettings {
     double specificHeat = 0;        ///< c_f [J/(kg K)], heat transfer
 };
 
-enum class CarrierType { analyticJet, roundLaminarJet, foamField, none };
+enum class CarrierType {
+    analyticJet,
+    roundLaminarJet,
+    foamField,
+    none,
+    oscillatingGas,
+    taylorGreenVortex
+};
 
 struct CarrierTypeName {
     CarrierType value;
     std::string_view name;
 };
 
-constexpr std::array<CarrierTypeName, 4> carrierTypeNames() {
+constexpr std::array<CarrierTypeName, 6> carrierTypeNames() {
     return {{{CarrierType::analyticJet, "analyticJet"},
              {CarrierType::roundLaminarJet, "roundLaminarJet"},
              {CarrierType::foamField, "foamField"},
-             {CarrierType::none, "none"}}};
+             {CarrierType::none, "none"},
+             {CarrierType::oscillatingGas, "oscillatingGas"},
+             {CarrierType::taylorGreenVortex, "taylorGreenVortex"}}};
 }
 
 struct JetGeometryName {
@@ -72,6 +82,13 @@ struct CarrierSettings {
     std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;
     double latticeSpacing = 0; ///< interpolation lattice: node spacing [m], 0: extent/100
+    std::optional<FoamSeriesSettings> foamSeries; ///< times (and cycle): a time series
+    // oscillatingGas only (carrier/oscillating_gas.h):
+    Vec3 oscillationAmplitude = Vec3::Zero(); ///< U of u = U sin 2πft [m/s]
+    double oscillationFrequency = 0;          ///< f [Hz]
+    // taylorGreenVortex only (carrier/taylor_green_vortex.h):
+    double vortexVelocity = 0;   ///< U [m/s]
+    double vortexWavelength = 0; ///< L = 2π/k [m]
 };
 
 } // namespace slides

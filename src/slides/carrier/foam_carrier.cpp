@@ -83,11 +83,23 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
         if (!wedge_ && patch.type == PatchType::empty && patch.size > 0 && !emptyNormal_)
             emptyNormal_ = mesh_.faceAreas[patch.start].normalized();
 
-    const PointWeights weights(mesh_);
     // A part of a decomposed case keeps the fields as read for shareProcessorPoints().
     const bool part =
         std::any_of(mesh_.patches.begin(), mesh_.patches.end(),
                     [](const FoamPatch& p) { return p.type == PatchType::processor; });
+    if (settings_.series) {
+        const std::string key = "carrier.foamFieldCoeffs.";
+        if (settings_.interpolation != FoamInterpolation::cellPoint)
+            throw InputError(caseDirectory.string(), 0, key + "interpolation",
+                             "a time series is interpolated by cellPoint only");
+        if (part)
+            throw InputError(caseDirectory.string(), 0, key + "times",
+                             "a time series is not tracked in parallel runs yet");
+        series_ = std::make_unique<FoamSeries>(caseDirectory, *settings_.series, mesh_);
+        timeDirectory_ = series_->firstDirectory();
+        return;
+    }
+    const PointWeights weights(mesh_);
     auto velocity = readFoamVolField<Vec3>(timeDirectory_, "U", mesh_);
     velocity_ = std::make_unique<InterpolableField<Vec3>>(velocity, mesh_, weights);
     if (part) velocityRead_ = std::move(velocity);
@@ -245,8 +257,36 @@ void FoamCarrier::missing(const std::string& field) const {
                      "missing field " + field + ", needed by the chosen physics");
 }
 
+void FoamCarrier::sampleLevelsAt(const TetLocation& at, const Vec3& x, const Mat3& rotation,
+                                 const LevelCache<FoamLevel>::Pair& levels, CarrierNeeds needs,
+                                 CarrierSample& out, std::size_t i) const {
+    const FoamLevel &before = *levels.before, &after = *levels.after;
+    const double weight = levels.bracket.weight;
+    const Vec3 u0 = before.velocity->value(mesh_, at), u1 = after.velocity->value(mesh_, at);
+    const Vec3 velocity = (1 - weight) * u0 + weight * u1;
+    out.velocity[i] = rotation * velocity;
+    if (needs.timeDerivative)
+        out.velocityTimeDerivative[i] = rotation * ((u1 - u0) / levels.bracket.interval);
+    if (needs.velocityGradient) {
+        const Mat3 gradient = (1 - weight) * tetGradient(mesh_, *locator_, *before.velocity, at) +
+                              weight * tetGradient(mesh_, *locator_, *after.velocity, at);
+        out.velocityGradient[i] =
+            rotation * wedgeHoopGradient(gradient, velocity, x) * rotation.transpose();
+    }
+    const auto scalar = [&](int s) {
+        return (1 - weight) * before.scalars[s]->value(mesh_, at) +
+               weight * after.scalars[s]->value(mesh_, at);
+    };
+    if (needs.turbulence) {
+        out.turbulentKineticEnergy[i] = scalar(0);
+        out.dissipationRate[i] = scalar(1);
+    }
+    if (needs.temperature) out.temperature[i] = scalar(2);
+}
+
 void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs,
-                           CarrierSample& out, std::size_t i) const {
+                           CarrierSample& out, std::size_t i,
+                           const LevelCache<FoamLevel>::Pair* levels) const {
     Mat3 rotation = Mat3::Identity();
     Vec3 x = point;
     if (wedge_) x = wedge_->toWedge(point, rotation);
@@ -272,9 +312,11 @@ void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNee
         if (needs.velocityGradient) out.velocityGradient[i].setZero();
         if (needs.turbulence) out.turbulentKineticEnergy[i] = out.dissipationRate[i] = 0;
         if (needs.temperature) out.temperature[i] = 0;
+        if (needs.timeDerivative) out.velocityTimeDerivative[i].setZero();
         return;
     }
     location = at.tet;
+    if (levels) return sampleLevelsAt(at, x, rotation, *levels, needs, out, i);
     const bool cellScheme = settings_.interpolation == FoamInterpolation::cell;
     const auto value = [&](const auto& field) {
         return cellScheme ? field.cells[at.cell] : field.value(mesh_, at);
@@ -300,15 +342,23 @@ void FoamCarrier::sample(std::span<const Vec3> points, double time, CarrierNeeds
 }
 
 void FoamCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations,
-                             double, CarrierNeeds needs, CarrierSample& out) const {
-    if (needs.turbulence && !k_) missing("k");
-    if (needs.turbulence && !epsilon_) missing("epsilon");
-    if (needs.temperature && !temperature_) missing("T");
+                             double time, CarrierNeeds needs, CarrierSample& out) const {
+    const std::array<const InterpolableField<double>*, 3> frozen{k_.get(), epsilon_.get(),
+                                                                 temperature_.get()};
+    const auto has = [&](std::size_t s) {
+        return series_ ? series_->has(s) : frozen[s] != nullptr;
+    };
+    if (needs.turbulence && !has(0)) missing("k");
+    if (needs.turbulence && !has(1)) missing("epsilon");
+    if (needs.temperature && !has(2)) missing("T");
     out.resize(points.size(), needs);
+    std::optional<LevelCache<FoamLevel>::Pair> levels;
+    if (series_) levels = series_->at(time);
     const auto count = static_cast<std::ptrdiff_t>(points.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i)
-        sampleAt(points[i], locations[i], needs, out, static_cast<std::size_t>(i));
+        sampleAt(points[i], locations[i], needs, out, static_cast<std::size_t>(i),
+                 levels ? &*levels : nullptr);
 }
 
 std::optional<Box> FoamCarrier::bounds() const {
@@ -359,7 +409,16 @@ std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) 
     return triangles;
 }
 
+void FoamCarrier::holdInterval(double start, double end) const {
+    if (series_) series_->hold(start, end);
+}
+
 CarrierNeeds FoamCarrier::provides() const {
+    if (series_)
+        return {.velocityGradient = true,
+                .turbulence = series_->has(0) && series_->has(1),
+                .temperature = series_->has(2),
+                .timeDerivative = true};
     return {.velocityGradient = true,
             .turbulence = k_ != nullptr && epsilon_ != nullptr,
             .temperature = temperature_ != nullptr};
@@ -384,9 +443,12 @@ double FoamCarrier::resolutionLength(std::int32_t location) const {
 }
 
 std::string FoamCarrier::describe() const {
-    std::string text = "foamField " + timeDirectory_.string() + " (" +
-                       std::to_string(mesh_.cellCount) + " cells, " +
-                       std::string(nameOf(foamInterpolationNames(), settings_.interpolation));
+    std::string text =
+        "foamField " +
+        (series_ ? "series of " + std::to_string(series_->levelCount()) + " levels from "
+                 : std::string()) +
+        timeDirectory_.string() + " (" + std::to_string(mesh_.cellCount) + " cells, " +
+        std::string(nameOf(foamInterpolationNames(), settings_.interpolation));
     if (wedge_) text += ", axisymmetric wedge";
     if (emptyNormal_) text += ", 2-D";
     if (lattice_) text += "; " + latticeReport_;

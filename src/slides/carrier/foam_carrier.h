@@ -13,7 +13,9 @@
 // escaped. With the lattice scheme the fields are resampled at start-up (carrier/foam_lattice.h) on
 // the mapped 3-D, wedge or 2-D coordinates; points the lattice cannot serve take the exact
 // cellPoint path, and describe() reports the lattice's error against cellPoint at random points of
-// the mesh.
+// the mesh. With a time series (carrier/foam_series.h, cellPoint only) each point is located
+// once and sampled on the two levels around the batch's time: U, ∇U, k, ε, T linear in time,
+// ∂U/∂t their difference over the write interval.
 //
 //     carrier { type foamField; foamFieldCoeffs { time latestTime; interpolation cellPoint; } }
 #pragma once
@@ -21,6 +23,7 @@
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/foam_interpolation.h"
 #include "slides/carrier/foam_lattice.h"
+#include "slides/carrier/foam_series.h"
 #include "slides/carrier/foam_shared_points.h"
 
 #include <memory>
@@ -32,6 +35,7 @@ struct FoamCarrierSettings {
     std::string time = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;
     double latticeSpacing = 0; ///< lattice scheme: node spacing [m], 0: largest extent / 100
+    std::optional<FoamSeriesSettings> series; ///< a time series instead of one time directory
 };
 
 /// A wedge's axis and centre plane: maps 3-D points to the wedge and rotates results back.
@@ -56,6 +60,10 @@ public:
                     CarrierNeeds needs, CarrierSample& out) const override;
     std::string describe() const override;
     CarrierNeeds provides() const override;
+    bool steady() const override { return !series_; }
+    void holdInterval(double start, double end) const override;
+    /// The time series, null for a frozen field.
+    const FoamSeries* series() const { return series_.get(); }
     /// The size of location's cell: 6V/A of its faces in 3-D, 4V/A of the faces not on wedge or
     /// empty patches for a wedge or 2-D mesh; the lattice's spacing for the lattice scheme.
     double resolutionLength(std::int32_t location) const override;
@@ -78,8 +86,13 @@ public:
     std::vector<std::pair<std::string, double>> figures() const override { return latticeFigures_; }
 
 private:
+    /// levels: the series' levels around the batch's time, null for a frozen field.
     void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
-                  std::size_t index) const;
+                  std::size_t index, const LevelCache<FoamLevel>::Pair* levels) const;
+    /// U, ∇U, ∂U/∂t, k, ε, T at a located point, linear in time between two levels.
+    void sampleLevelsAt(const TetLocation& at, const Vec3& x, const Mat3& rotation,
+                        const LevelCache<FoamLevel>::Pair& levels, CarrierNeeds needs,
+                        CarrierSample& out, std::size_t i) const;
     /// The gradient at wedge point x with the hoop column of an axisymmetric field.
     Mat3 wedgeHoopGradient(const Mat3& gradient, const Vec3& velocity, const Vec3& x) const;
     [[noreturn]] void missing(const std::string& field) const;
@@ -105,6 +118,7 @@ private:
     std::unique_ptr<FoamLattice> lattice_; ///< lattice scheme only
     std::string latticeReport_;
     std::vector<std::pair<std::string, double>> latticeFigures_;
+    std::unique_ptr<FoamSeries> series_; ///< a time series: the levels replace the fields above
 };
 
 } // namespace slides

@@ -4,7 +4,9 @@
 #include "slides/carrier/foam_carrier.h"
 #include "slides/carrier/jet_scalars.h"
 #include "slides/carrier/no_gas.h"
+#include "slides/carrier/oscillating_gas.h"
 #include "slides/carrier/round_laminar_jet.h"
+#include "slides/carrier/taylor_green_vortex.h"
 #include "slides/core/error.h"
 
 #include <array>
@@ -54,10 +56,16 @@ std::unique_ptr<CarrierField> makeCarrier(const CarrierSettings& carrier, const 
         return withScalars(std::make_unique<RoundLaminarJet>(
             nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
                                               carrier.coreLength}));
+    case CarrierType::oscillatingGas:
+        return std::make_unique<OscillatingGas>(carrier.oscillationAmplitude,
+                                                carrier.oscillationFrequency, gasTemperature);
+    case CarrierType::taylorGreenVortex:
+        return std::make_unique<TaylorGreenVortex>(carrier.vortexVelocity, carrier.vortexWavelength,
+                                                   carrier.viscosity, gasTemperature);
     case CarrierType::foamField: {
         auto field = std::make_unique<FoamCarrier>(
-            caseDirectory,
-            FoamCarrierSettings{carrier.foamTime, carrier.interpolation, carrier.latticeSpacing});
+            caseDirectory, FoamCarrierSettings{carrier.foamTime, carrier.interpolation,
+                                               carrier.latticeSpacing, carrier.foamSeries});
         requireNozzleInMesh(nozzle, *field, dictionaryFile);
         return field;
     }

@@ -85,6 +85,20 @@ nlohmann::json sceneSettings(const Scene& scene) {
             {"intensity", carrier.turbulence->intensity},
             {"lengthScale", carrier.turbulence->lengthScale},
             {"lengthScaleToHalfWidth", carrier.turbulence->lengthScaleToHalfWidth}};
+    if (carrier.type == CarrierType::oscillatingGas)
+        settings["carrier"]["oscillatingGas"] = {{"amplitude", vec(carrier.oscillationAmplitude)},
+                                                 {"frequency", carrier.oscillationFrequency}};
+    if (carrier.type == CarrierType::taylorGreenVortex)
+        settings["carrier"]["taylorGreenVortex"] = {{"velocity", carrier.vortexVelocity},
+                                                    {"wavelength", carrier.vortexWavelength}};
+    if (carrier.foamSeries) {
+        auto& series = settings["carrier"]["series"];
+        series["times"] = carrier.foamSeries->range
+                              ? nlohmann::json::array({carrier.foamSeries->range->first,
+                                                       carrier.foamSeries->range->second})
+                              : nlohmann::json("all");
+        if (carrier.foamSeries->cycle) series["cycle"] = *carrier.foamSeries->cycle;
+    }
     const RadiusDistribution& radius = scene.particles.radius;
     settings["particles"] = {
         {"count", scene.particles.count},

@@ -50,7 +50,9 @@ std::vector<KeyDeclaration> declareKeys() {
          namesOf(carrierTypeNames()), R::any,
          "analyticJet: sech² jet of Eq. 5.10/5.11; roundLaminarJet: Schlichting's exact round "
          "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present); "
-         "none: no gas (a DEM scene: gravity and contacts only, time.dt given)."},
+         "none: no gas (a DEM scene: gravity and contacts only, time.dt given); oscillatingGas: "
+         "uniform gas u = U sin 2πft; taylorGreenVortex: the decaying Taylor–Green vortex (both "
+         "unsteady, with closed forms)."},
         {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
         {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
@@ -90,6 +92,26 @@ std::vector<KeyDeclaration> declareKeys() {
          "lattice: cellPoint resampled once onto a lattice, then trilinear (fast)."},
         {"carrier.foamFieldCoeffs.latticeSpacing", K::scalar, "m", "0", {}, R::nonNegative,
          "Node spacing of the lattice scheme; 0: 1/100 of the mesh's largest extent."},
+        {"carrier.oscillatingGasCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Uniform oscillating gas u(t) = U sin 2πft (carrier/oscillating_gas.h)."},
+        {"carrier.oscillatingGasCoeffs.amplitude", K::vector, "m/s", "", {}, R::any,
+         "Velocity amplitude U."},
+        {"carrier.oscillatingGasCoeffs.frequency", K::scalar, "Hz", "", {}, R::positive,
+         "Frequency f."},
+        {"carrier.taylorGreenVortexCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Decaying Taylor–Green vortex in the x–y plane, ν = fluid.kinematicViscosity "
+         "(carrier/taylor_green_vortex.h)."},
+        {"carrier.taylorGreenVortexCoeffs.velocity", K::scalar, "m/s", "", {}, R::positive,
+         "Initial velocity amplitude U.", noMinimum, maximumGasSpeed},
+        {"carrier.taylorGreenVortexCoeffs.wavelength", K::scalar, "m", "", {}, R::positive,
+         "Period L of the vortex cells in x and y (k = 2π/L)."},
+        {"carrier.foamFieldCoeffs.times", K::timeRange, "s", "-", {}, R::any,
+         "A time series instead of one time directory: the written times from start to end "
+         "(or all), U, k, epsilon, T linear in time between them on a fixed mesh "
+         "(carrier/foam_series.h); run time 0 is the first level."},
+        {"carrier.foamFieldCoeffs.cycle", K::scalar, "s", "-", {}, R::positive,
+         "Period of a periodic series: run time t reads the series at t mod cycle, the first "
+         "level following the last."},
         {"carrier.turbulence", K::dictionary, "-", "-", {}, R::any,
          "Turbulence of the analytic jets, k = 3/2 (I U)², ε = 0.09^(3/4) k^(3/2)/ℓ "
          "(carrier/jet_scalars.h); without it they are laminar (k = ε = 0)."},
@@ -496,6 +518,7 @@ std::string kindName(const KeyDeclaration& key) {
     case KeyKind::switchOrAuto: return "switch \\| auto";
     case KeyKind::vector: return "vector";
     case KeyKind::integerTriple: return "3 integers";
+    case KeyKind::timeRange: return "all \\| (start end)";
     }
     return "";
 }

@@ -21,7 +21,8 @@ enum class KeyKind {
     boolean,
     switchOrAuto, ///< a switch (on, off, yes, ...) or auto
     vector,
-    integerTriple
+    integerTriple,
+    timeRange ///< all, or (start end)
 };
 
 /// Range a number must lie in.

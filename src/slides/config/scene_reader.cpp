@@ -102,6 +102,20 @@ public:
         });
     }
 
+    /// Written times: `all` (nullopt) or (start end), start < end.
+    std::optional<std::pair<double, double>> timeRange(const std::string& path) const {
+        return read(path, [](const Dictionary& d, const std::string& key) {
+            const DictEntry* entry = d.find(key);
+            if (entry && entry->items.size() == 1 && entry->items[0].isWord() &&
+                entry->items[0].text() == "all")
+                return std::optional<std::pair<double, double>>();
+            const auto values = d.scalarList(key);
+            if (values.size() != 2 || !(values[0] < values[1]))
+                d.fail(key, "expected all, or (start end) with start < end");
+            return std::optional(std::pair(values[0], values[1]));
+        });
+    }
+
     /// A vector normalised to unit length; a zero vector is an error.
     Vec3 direction(const std::string& path) const {
         const Vec3 value = vector(path);
@@ -752,6 +766,22 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
         carrier.interpolation =
             *valueNamed(foamInterpolationNames(), keys.word(coeffs + ".interpolation"));
         carrier.latticeSpacing = keys.scalar(coeffs + ".latticeSpacing");
+        if (keys.has(coeffs + ".times"))
+            carrier.foamSeries = FoamSeriesSettings{keys.timeRange(coeffs + ".times"),
+                                                    keys.optionalScalar(coeffs + ".cycle")};
+        else if (keys.has(coeffs + ".cycle"))
+            keys.fail(coeffs + ".cycle", "a cycle replays a time series: give times too");
+        return carrier;
+    }
+    carrier.viscosity = fluid.kinematicViscosity;
+    if (carrier.type == CarrierType::oscillatingGas) {
+        carrier.oscillationAmplitude = keys.vector(coeffs + ".amplitude");
+        carrier.oscillationFrequency = keys.scalar(coeffs + ".frequency");
+        return carrier;
+    }
+    if (carrier.type == CarrierType::taylorGreenVortex) {
+        carrier.vortexVelocity = keys.scalar(coeffs + ".velocity");
+        carrier.vortexWavelength = keys.scalar(coeffs + ".wavelength");
         return carrier;
     }
     carrier.nozzleVelocity = keys.scalar(coeffs + ".nozzleVelocity");

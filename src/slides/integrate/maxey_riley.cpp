@@ -13,7 +13,8 @@
 namespace slides {
 
 MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
-                                     double particleDensity, const TimeSettings& time)
+                                     double particleDensity, const TimeSettings& time,
+                                     bool steadyCarrier)
     : physics_(physics), fluid_(fluid),
       particleDensity_(particleDensity), drag_{physics.drag, fluid.density,
                                                fluid.kinematicViscosity, particleDensity},
@@ -23,6 +24,7 @@ MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const Fluid
       fluidAccelerationFactor_(inertia_.fluidAccelerationFactor(particleDensity, fluid.density)) {
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
+    needs_.timeDerivative = !steadyCarrier && (physics.addedMass || physics.pressureGradient);
     width_ = 4; // age, v_{n−1}
     history_ = physics.history != HistoryModel::none;
     spinHistory_ = physics.spin && physics.spinHistory;
@@ -173,6 +175,10 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             const Mat3& grad1 = gasEnd_.velocityGradient[i];
             step.forceStart += fluidAccelerationFactor_ * steadyFluidAcceleration(u0, grad0);
             step.forceEnd += fluidAccelerationFactor_ * steadyFluidAcceleration(u1, grad1);
+            if (needs_.timeDerivative) {
+                step.forceStart += fluidAccelerationFactor_ * gasStart.velocityTimeDerivative[i];
+                step.forceEnd += fluidAccelerationFactor_ * gasEnd_.velocityTimeDerivative[i];
+            }
             const Vec3 vorticity0 = vorticity(grad0), vorticity1 = vorticity(grad1);
             Vec3 spinStart = Vec3::Zero(), spinEnd = Vec3::Zero();
             if (physics_.spin) {

@@ -2,7 +2,8 @@
 // any of the unsteady terms is on; the stepper keeps its exponential schemes otherwise.
 //
 // Reference: Eq. 3.3/3.4 and 3.18 of the reference. Per step of length h, for every particle:
-//   1. the carrier at x_n (U, and ∇U when a term needs it), and at the predicted end x*, both
+//   1. the carrier at x_n (U, ∇U when a term needs it, and ∂U/∂t of an unsteady carrier for the
+//      fluid acceleration DU/Dt = ∂U/∂t + (U·∇)U), and at the predicted end x*, both
 //      sampled by the stepper (from the particles' mesh cells, with their eddy fluctuations
 //      when dispersion is on, so the gas velocity a particle sees is U + ū'; k, ε and T of the
 //      start sample serve dispersion and heating),
@@ -47,9 +48,10 @@ namespace slides {
 class MaxeyRileyStepper {
 public:
     /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run. The
-    /// history memory is sized for steps of time.dt up to time.endTime.
+    /// history memory is sized for steps of time.dt up to time.endTime. With an unsteady carrier
+    /// (steadyCarrier false) the fluid acceleration takes ∂U/∂t from the samples too.
     MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
-                      double particleDensity, const TimeSettings& time);
+                      double particleDensity, const TimeSettings& time, bool steadyCarrier = true);
 
     /// Doubles of model state per particle.
     std::size_t stateWidth() const { return width_; }

@@ -5,8 +5,9 @@
 // m_e = m_p + C_A m_f, and the fluid acceleration DU/Dt acts through the pressure gradient
 // (m_f DU/Dt) and the added mass (C_A m_f DU/Dt):
 //   m_e dv/dt = F_drag + F_history + F_lift + (m_f + C_A m_f) DU/Dt + (m_p − m_f) g.
-// Every term below is per unit effective mass. For a steady carrier (the analytic jets, a
-// frozen OpenFOAM field) DU/Dt = (U·∇)U from the interpolated velocity gradient.
+// Every term below is per unit effective mass. DU/Dt = ∂U/∂t + (U·∇)U: for a steady carrier (the
+// analytic jets, a frozen OpenFOAM field) only (U·∇)U from the interpolated velocity gradient; an
+// unsteady one (carrier/carrier_field.h, steady() false) supplies ∂U/∂t as well.
 //
 //     physics { addedMass on; pressureGradient on; }   // both off by default
 #pragma once
@@ -52,6 +53,12 @@ inline double effectiveResponseTime(double particleDensity, double fluidDensity,
 /// DU/Dt = ∂U/∂t + (U·∇)U of a steady field: gradient(i, j) = dU_i/dx_j, so (U·∇)U = ∇U · U.
 inline Vec3 steadyFluidAcceleration(const Vec3& velocity, const Mat3& velocityGradient) {
     return velocityGradient * velocity;
+}
+
+/// DU/Dt = ∂U/∂t + (U·∇)U of an unsteady field (Eq. 3.3's fluid acceleration).
+inline Vec3 fluidAcceleration(const Vec3& velocity, const Mat3& velocityGradient,
+                              const Vec3& velocityTimeDerivative) {
+    return velocityTimeDerivative + steadyFluidAcceleration(velocity, velocityGradient);
 }
 
 /// Vorticity ∇ × U from the velocity gradient [1/s].

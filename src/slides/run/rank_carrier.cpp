@@ -28,10 +28,11 @@ template <typename T> void append(std::vector<T>& values, const Bytes& bytes) {
         std::memcpy(static_cast<void*>(values.data() + start), bytes.data(), bytes.size());
 }
 
-/// The doubles of one sample: U, then ∇U, k and ε, T where asked, then the resolution length.
+/// The doubles of one sample: U, then ∇U, k and ε, T, ∂U/∂t where asked, then the resolution
+/// length.
 std::size_t sampleWidth(CarrierNeeds needs) {
     return 3 + (needs.velocityGradient ? 9 : 0) + (needs.turbulence ? 2 : 0) +
-           (needs.temperature ? 1 : 0) + 1;
+           (needs.temperature ? 1 : 0) + (needs.timeDerivative ? 3 : 0) + 1;
 }
 
 } // namespace
@@ -131,6 +132,8 @@ void RankCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
             *v++ = here.dissipationRate[k];
         }
         if (needs.temperature) *v++ = here.temperature[k];
+        if (needs.timeDerivative)
+            for (int d = 0; d < 3; ++d) *v++ = here.velocityTimeDerivative[k][d];
         *v = part_->resolutionLength(found[k]);
     }
     ranks_.keepLowestClaims(records, width); // the lowest rank holding a point answers it
@@ -151,6 +154,8 @@ void RankCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_
             out.dissipationRate[i] = *v++;
         }
         if (needs.temperature) out.temperature[i] = *v++;
+        if (needs.timeDerivative)
+            for (int d = 0; d < 3; ++d) out.velocityTimeDerivative[i][d] = *v++;
         remoteResolution_[j] = *v;
         const bool indexable =
             static_cast<std::int64_t>(remoteBase) + static_cast<std::int64_t>(j) <

@@ -38,6 +38,8 @@ public:
     void sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations, double time,
                     CarrierNeeds needs, CarrierSample& out) const override;
     CarrierNeeds provides() const override { return part_->provides(); }
+    bool steady() const override { return part_->steady(); }
+    void holdInterval(double start, double end) const override { part_->holdInterval(start, end); }
     double resolutionLength(std::int32_t location) const override;
     /// The patches of the case (the processor patches left out), by index.
     std::vector<std::string> boundaryNames() const override { return boundaryNames_; }

@@ -31,7 +31,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         throw std::logic_error("time.dt is not set: the scene analysis chooses it "
                                "(analysis/scene_analysis.h)");
     if (scene.physics.unsteadyForces()) {
-        maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time);
+        maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time,
+                            carrier.steady());
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
     if (scene.collisions.model == CollisionModel::impulse)
@@ -113,6 +114,7 @@ void Stepper::step() {
 void Stepper::buildStages() {
     const bool gas = scene_.carrier.type != CarrierType::none;
     stages_.clear();
+    if (gas && !carrier_.steady()) stages_.push_back(&Stepper::holdCarrierTimes);
     if (carrier_.keepsLocations()) stages_.push_back(&Stepper::orderInMemory);
     stages_.push_back(&Stepper::inject);
     if (plane_) stages_.push_back(&Stepper::holdInPlane);
@@ -133,6 +135,8 @@ void Stepper::buildStages() {
     // Contacts of particles in the plane act in it; a rebound off a surface may leave it.
     if (plane_) stages_.push_back(&Stepper::holdInPlane);
 }
+
+void Stepper::holdCarrierTimes(double h) { carrier_.holdInterval(time_, time_ + h); }
 
 void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
 
@@ -216,6 +220,7 @@ constexpr auto explicitStep = [](auto&&... step) { advanceExplicitly(step...); }
 void Stepper::sampleGas(double) {
     CarrierNeeds needs = needs_;
     if (maxeyRiley_) needs.velocityGradient = maxeyRiley_->needs().velocityGradient;
+    if (maxeyRiley_) needs.timeDerivative = maxeyRiley_->needs().timeDerivative;
     sampleCarrier(cloud_.position, cloud_.carrierLocation, time_, needs, gas_);
 }
 

@@ -1,7 +1,8 @@
 // Stepper: the loop of one run — inject, sample the carrier, integrate, meet surfaces.
 //
 // Per step of length h (the last one shortened to end exactly at time.endTime):
-//   0. with a mesh carrier, every few steps the cloud is put in the order of its tetrahedra
+//   0. an unsteady carrier holds what the step's times [t, t + h] need (a series' levels);
+//      with a mesh carrier, every few steps the cloud is put in the order of its tetrahedra
 //      (core/particle_order.h), so the walks and samples read the mesh nearly in order;
 //   1. particles due before t + h enter (integrate/injector.h); one due at t_k inside the step
 //      is advanced only over its remainder t + h − t_k, as a parcel's step fraction in OpenFOAM
@@ -107,6 +108,8 @@ private:
     using Stage = void (Stepper::*)(double h);
     /// The stages of this scene's step, each only when its term is on (built once).
     void buildStages();
+    /// 0. an unsteady carrier made ready for the step's times [t, t + h].
+    void holdCarrierTimes(double h);
     /// 1. particles due before t + h enter; their step lengths.
     /// 0. every few steps, the cloud in the order of its carrier locations.
     void orderInMemory(double h);
