@@ -29,11 +29,7 @@ SoftSphereCollisions::SoftSphereCollisions(const CollisionSettings& collisions,
                                            const std::vector<Surface>& surfaces)
     : settings_(collisions), particles_(particles), surfaces_(surfaces),
       newWallContacts_(surfaces.size(), 0) {
-    const double e = collisions.restitution.coefficient;
-    const double friction = collisions.friction.dynamicCoefficient;
-    law_ = collisions.softSphere.damping == SoftSphereDamping::tsuji
-               ? SoftContactLaw{liggghtsDampingRatio(e), friction}
-               : softContactLaw(e, friction);
+    law_ = softContactLawOf(collisions);
     // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
     const ContactBody particle{1.0, 1.0, &particles.material};
     particleModuli_ = contactPair(particle, particle);

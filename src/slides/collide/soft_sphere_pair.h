@@ -1,5 +1,5 @@
 // Soft-sphere contact load of a sphere pair or a sphere and a plane wall: force and torques
-// from the Hertz–Mindlin laws of physics/soft_contact.h, for a DEM step loop.
+// from the normal and tangential laws of physics/soft_contact.h, for a DEM step loop.
 //
 // Reference: Section 2.2 of the reference (Eq. 2.4–2.14), forms of LIGGGHTS `hertz` +
 // `tangential history`. The torques act at the contact point on the plane of the overlap

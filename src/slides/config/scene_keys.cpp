@@ -341,6 +341,13 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions.friction.dynamic", K::scalar, "-", "0.3", {}, R::nonNegative,
          "μ_d: tangential impulse of a slipping contact per normal impulse; the Coulomb limit "
          "μ of softSphere contacts."},
+        {"collisions.friction.regularisation", K::word, "-", "none",
+         namesOf(frictionRegularisationNames()), R::any,
+         "softSphere tangential law: none, the Mindlin spring with the Coulomb limit (Eq. 2.5, "
+         "2.14); or regularised Coulomb friction μ R(v_slip) F_n (Eq. 2.65): linear (2.66), tanh "
+         "(2.67), algebraic (2.68). A sphere sliding on a plane rolls from v = 5/7 v0 on."},
+        {"collisions.friction.slipSpeed", K::scalar, "m/s", "1e-3", {}, R::positive,
+         "ε of the regularised friction (Eq. 2.66–2.68): slip speed over which it builds up."},
         {"collisions.heating", K::boolean, "-", "on", {}, R::any,
          "Contacts (impulse pairs, rebounds, sticking; soft-sphere damping and sliding) heat "
          "their particles by the energy they dissipate (Eq. 2.117), shared by heat capacity; "
@@ -355,6 +362,16 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions.softSphereCoeffs.neighbourSkin", K::scalar, "-", "0.2", {}, R::nonNegative,
          "Verlet-list skin per largest particle radius: the list is rebuilt when a particle has "
          "moved half of it (0: every step)."},
+        {"collisions.softSphereCoeffs.contactLaw", K::word, "-", "hertz",
+         namesOf(normalContactLawNames()), R::any,
+         "Normal force law (physics/contact_laws.h): hertz (Eq. 2.4, damped as Eq. 2.6–2.8); "
+         "linearSpringDashpot (Eq. 2.6–2.7: e = exp(−πζ/√(1−ζ²)), t_c = π/ω_d); "
+         "viscoelasticHertz (Brilliantov, Eq. 2.8: e falls with impact speed); waltonBraun "
+         "(Eq. 2.9–2.10: k_U = k_L/e², e = √(k_L/k_U)). Verified on Chung & Ooi tests 1–3."},
+        {"collisions.softSphereCoeffs.normalStiffness", K::scalar, "N/m", "-", {}, R::positive,
+         "k of linearSpringDashpot, loading k_L of waltonBraun (Eq. 2.6, 2.9)."},
+        {"collisions.softSphereCoeffs.dissipativeTime", K::scalar, "s", "-", {}, R::nonNegative,
+         "Brilliantov's A of viscoelasticHertz: F = K_n(δ^{3/2} + 3/2 A √δ dδ/dt) (Eq. 2.8)."},
 
         {"deposition", K::dictionary, "-", "-", {}, R::any,
          "Adhesion on surfaces whose interaction is deposit, and on their deposit (Eq. 5.7–5.9)."},

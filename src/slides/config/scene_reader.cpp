@@ -548,6 +548,23 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
             *valueNamed(softSphereDampingNames(), keys.word("collisions.softSphereCoeffs.damping"));
         collisions.softSphere.neighbourSkin =
             keys.scalar("collisions.softSphereCoeffs.neighbourSkin");
+        SoftSphereSettings& softSphere = collisions.softSphere;
+        softSphere.contactLaw = *valueNamed(normalContactLawNames(),
+                                            keys.word("collisions.softSphereCoeffs.contactLaw"));
+        if (softSphere.contactLaw == NormalContactLaw::linearSpringDashpot ||
+            softSphere.contactLaw == NormalContactLaw::waltonBraun) {
+            keys.require("collisions.softSphereCoeffs.normalStiffness",
+                         "by collisions.softSphereCoeffs.contactLaw");
+            softSphere.normalStiffness = keys.scalar("collisions.softSphereCoeffs.normalStiffness");
+        }
+        if (softSphere.contactLaw == NormalContactLaw::viscoelasticHertz) {
+            keys.require("collisions.softSphereCoeffs.dissipativeTime",
+                         "by collisions.softSphereCoeffs.contactLaw viscoelasticHertz");
+            softSphere.dissipativeTime = keys.scalar("collisions.softSphereCoeffs.dissipativeTime");
+        }
+        collisions.friction.regularisation = *valueNamed(
+            frictionRegularisationNames(), keys.word("collisions.friction.regularisation"));
+        collisions.friction.regularisationSpeed = keys.scalar("collisions.friction.slipSpeed");
     }
 
     AdhesionSettings& adhesion = scene.deposition;
