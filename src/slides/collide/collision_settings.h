@@ -16,6 +16,7 @@
 #pragma once
 
 #include "slides/collide/impulse.h"
+#include "slides/physics/contact_conduction.h"
 #include "slides/physics/restitution.h"
 
 #include <array>
@@ -87,6 +88,8 @@ struct CollisionSettings {
     /// Contacts heat their particles by the energy they dissipate (Eq. 2.117), when
     /// temperatures are tracked (physics.heatTransfer).
     bool heating = true;
+    /// Heat conducted between touching soft spheres (physics/contact_conduction.h).
+    ContactConductionSettings conduction;
 };
 
 /// The soft-sphere contact law of the settings: the normal law with its constants, the damping

@@ -31,6 +31,8 @@ struct ContactLoad {
     /// (F_n − F_el) dδ/dt of the normal damping (and of the no-pull clamp), γ_t v_t² while the
     /// tangential spring sticks, −F_t·v_t while it slides at the Coulomb limit.
     double dissipatedPower = 0;
+    /// Heat flowing into the first body from the second [W] (Eq. 2.118; set by the caller).
+    double conductedPower = 0;
 };
 
 /// Load of sphere a on sphere b (force on a). The spring is that pair's; it is reset when the

@@ -352,6 +352,11 @@ std::vector<KeyDeclaration> declareKeys() {
          "Contacts (impulse pairs, rebounds, sticking; soft-sphere damping and sliding) heat "
          "their particles by the energy they dissipate (Eq. 2.117), shared by heat capacity; "
          "with physics.heatTransfer on."},
+        {"collisions.conduction", K::word, "-", "none", namesOf(contactConductionNames()),
+         R::any,
+         "Heat conducted between touching softSphere particles, with physics.heatTransfer on: "
+         "none, or batchelorOBrien: Q = π K_f a ΔT ln(K_p/K_f)², a = 2R* (Eq. 2.118), from "
+         "particles.thermalConductivity and fluid.thermalConductivity."},
         {"collisions.softSphereCoeffs", K::dictionary, "-", "-", {}, R::any,
          "The softSphere model (collide/soft_sphere_collisions.h); its damping follows from "
          "restitution.coefficient, which must then be constant."},
@@ -378,13 +383,14 @@ std::vector<KeyDeclaration> declareKeys() {
         {"deposition.adhesion", K::word, "-", "interfaceEnergy", namesOf(adhesionModelNames()),
          R::any,
          "interfaceEnergy: F = 2πR*·2√(γ1γ2) (Eq. 2.72–2.74, 5.7); hamaker: F = A R*/(6ε0²) "
-         "(Eq. 2.75)."},
+         "(Eq. 2.75); jkr: the JKR pull-off 3/2 πWR* (Eq. 2.84); dmt: 2πWR* (Eq. 2.91); "
+         "taborMap: JKR's where Tabor's μ_T (Eq. 2.92, ε0 = contactSeparation) ≥ 1, else DMT's."},
         {"deposition.adhesionFactor", K::scalar, "-", "1", {}, R::positive,
          "α multiplying the adhesion force (Table 5.2 assumes 5000)."},
         {"deposition.hamakerConstant", K::scalar, "J", "-", {}, R::positive,
          "Hamaker constant A (adhesion hamaker)."},
         {"deposition.contactSeparation", K::scalar, "m", "4e-10", {}, R::positive,
-         "Separation ε0 of surfaces in contact (adhesion hamaker)."},
+         "Separation ε0 of surfaces in contact (adhesion hamaker, taborMap)."},
 
         {"surfaces", K::dictionary, "-", "", {}, R::any,
          "Named surfaces that particles meet."},

@@ -533,6 +533,16 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     collisions.friction.staticCoefficient = keys.scalar("collisions.friction.static");
     collisions.friction.dynamicCoefficient = keys.scalar("collisions.friction.dynamic");
     collisions.heating = keys.boolean("collisions.heating");
+    ContactConductionSettings& conduction = collisions.conduction;
+    conduction.model = *valueNamed(contactConductionNames(), keys.word("collisions.conduction"));
+    if (conduction.model != ContactConduction::none) {
+        if (collisions.model != CollisionModel::softSphere)
+            keys.fail("collisions.conduction",
+                      "needs collisions.model softSphere, whose contacts last");
+        keys.require("particles.thermalConductivity", "by collisions.conduction");
+        conduction.particleConductivity = scene.particles.thermalConductivity;
+        conduction.gasConductivity = scene.fluid.thermalConductivity;
+    }
     if (collisions.model == CollisionModel::softSphere) {
         // The damped Hertz impact restitutes one e whatever the speed (physics/soft_contact.h).
         if (keys.has("collisions.restitution.model") &&
@@ -607,9 +617,9 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
         requireMaterial(base + ".material", false, "by interaction of surface " + surface.name);
         if (surface.interaction != SurfaceInteraction::deposit) continue;
         anyDeposit = true;
-        if (adhesion.model == AdhesionModel::interfaceEnergy)
+        if (adhesion.model != AdhesionModel::hamaker) // the work of adhesion W₁₂
             keys.require(base + ".material.surfaceEnergy",
-                         "by deposition.adhesion interfaceEnergy");
+                         "by deposition.adhesion " + keys.word("deposition.adhesion"));
     }
     if (anyContact)
         requireMaterial("particles.material", velocityDependent,
@@ -621,9 +631,9 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
             keys.require("particles.material.bulkModulus", "by a deposit surface (Eq. 5.9)");
             keys.require("particles.material.shearModulus", "by a deposit surface (Eq. 5.9)");
         }
-        if (adhesion.model == AdhesionModel::interfaceEnergy)
+        if (adhesion.model != AdhesionModel::hamaker)
             keys.require("particles.material.surfaceEnergy",
-                         "by deposition.adhesion interfaceEnergy");
+                         "by deposition.adhesion " + keys.word("deposition.adhesion"));
     }
 }
 
