@@ -99,8 +99,8 @@ double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, do
 double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap) {
     switch (law.normalLaw) {
     case NormalContactLaw::hertz:
-    case NormalContactLaw::viscoelasticHertz:
-        return 4.0 / 3.0 * pair.youngsModulus * std::sqrt(pair.radius) * std::pow(overlap, 1.5);
+    case NormalContactLaw::viscoelasticHertz: // k_n δ, k_n = 4/3 E* √(R*δ) (Eq. 2.4)
+        return 4.0 / 3.0 * pair.youngsModulus * contactRadius(pair, overlap) * overlap;
     case NormalContactLaw::linearSpringDashpot:
     case NormalContactLaw::waltonBraun: return law.normalStiffness * overlap;
     }
