@@ -23,6 +23,7 @@
 //    and angular momentum to round-off; kinetic energy does not increase; the elastic
 //    frictionless case keeps it to O(dt²) (the error falls 4× when dt halves).
 // Every impact is resolved with 200 steps per Hertz contact duration unless stated.
+#include "../support/chung_ooi.h"
 #include "../support/dem_impact.h"
 #include "slides/physics/soft_contact.h"
 
@@ -38,58 +39,7 @@
 namespace slides {
 namespace {
 
-using test::DemBody;
-using test::ImpactRecord;
-using test::ImpactScene;
-using test::runImpact;
-
-// Materials of Chung & Ooi (2011), Tables 1–4: E [Pa], ν, ρ [kg/m³].
-struct BenchmarkMaterial {
-    const char* name;
-    double youngsModulus, poissonRatio, density;
-    ElasticMaterial elastic() const { return {youngsModulus, poissonRatio}; }
-};
-constexpr BenchmarkMaterial glass{"glass", 4.8e10, 0.20, 2800};
-constexpr BenchmarkMaterial limestone{"limestone", 2.0e10, 0.25, 2500};
-constexpr BenchmarkMaterial aluminiumAlloy{"aluminiumAlloy", 7.0e10, 0.33, 2700};
-constexpr BenchmarkMaterial magnesiumAlloy{"magnesiumAlloy", 4.0e10, 0.35, 1800};
-constexpr BenchmarkMaterial aluminiumOxide{"aluminiumOxide", 3.8e11, 0.23, 4000};
-constexpr BenchmarkMaterial castIron{"castIron", 1.0e11, 0.25, 7000};
-
-double sphereMass(const BenchmarkMaterial& material, double radius) {
-    return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * material.density;
-}
-
-DemBody body(const BenchmarkMaterial& material, double radius, const Vec3& position,
-             const Vec3& velocity, const Vec3& spin = Vec3::Zero()) {
-    return {{position, velocity, spin, radius}, sphereMass(material, radius)};
-}
-
-/// Two spheres moving head on along x with the given velocities, a small gap apart.
-ImpactScene pairScene(const BenchmarkMaterial& a, double radiusA, double velocityA,
-                      const BenchmarkMaterial& b, double radiusB, double velocityB,
-                      const SoftContactLaw& law) {
-    const double gap = 1e-3 * std::min(radiusA, radiusB);
-    ImpactScene scene;
-    scene.first = body(a, radiusA, {-radiusA - gap, 0, 0}, {velocityA, 0, 0});
-    scene.second = body(b, radiusB, {radiusB, 0, 0}, {velocityB, 0, 0});
-    scene.pair = elasticPair(a.elastic(), radiusA, scene.first.mass, b.elastic(), radiusB,
-                             scene.second->mass);
-    scene.law = law;
-    return scene;
-}
-
-/// A sphere a small gap from the rigid wall x = 0, moving towards it (normal −x into the gas).
-ImpactScene wallScene(const BenchmarkMaterial& material, double radius, const Vec3& velocity,
-                      const SoftContactLaw& law) {
-    const double gap = 1e-3 * radius;
-    ImpactScene scene;
-    scene.first = body(material, radius, {-radius - gap, 0, 0}, velocity);
-    scene.wallNormal = -Vec3::UnitX();
-    scene.pair = sphereWallPair(material.elastic(), radius, scene.first.mass, rigidMaterial());
-    scene.law = law;
-    return scene;
-}
+using namespace test; // Chung & Ooi's materials and scenes, the impact integrator
 
 TEST(SoftContactPair, EffectivePropertiesOfPairAndWall) {
     // E* of two glass spheres: E/(2(1 − ν²)); G* = G/(2(2 − ν)), G = E/(2(1 + ν)).

@@ -213,7 +213,8 @@ struct GasRun {
     long listBuilds = 0;
 };
 
-GasRun runGas(int steps, double skin, int threads, int restartAfter = -1) {
+GasRun runGas(int steps, double skin, int threads, int restartAfter = -1,
+              NormalContactLaw law = NormalContactLaw::hertz) {
 #ifdef _OPENMP
     omp_set_num_threads(threads);
 #else
@@ -221,6 +222,8 @@ GasRun runGas(int steps, double skin, int threads, int restartAfter = -1) {
 #endif
     Scene scene = demScene(512, 0.9, 1e-5);
     scene.collisions.softSphere = {SoftSphereDamping::tsuji, skin};
+    scene.collisions.softSphere.contactLaw = law;
+    scene.collisions.softSphere.normalStiffness = 1000; // Hertz's secant stiffness at 0.5 m/s
     NoGas vacuum;
     auto stepper = std::make_unique<Stepper>(scene, vacuum);
     start(*stepper, scene, granularGas());
@@ -291,6 +294,20 @@ TEST(SoftSphereStepper, GranularGasIsTheSameForAnyThreadCountSkinOrRestart) {
     // Without a skin the list is rebuilt every step; with 0.2 R, every few steps.
     EXPECT_EQ(noSkin.listBuilds, 1500);
     EXPECT_LT(oneThread.listBuilds, 1500 / 4);
+}
+
+TEST(SoftSphereStepper, HysteresisOfWaltonBraunContactsIsTheSameForAnyThreadCountOrRestart) {
+    // Walton–Braun contacts unload from their largest overlap (Eq. 2.10), which the springs of
+    // touching contacts carry through a restart.
+    const GasRun oneThread = runGas(1000, 0.2, 1, -1, NormalContactLaw::waltonBraun);
+    const GasRun twoThreads = runGas(1000, 0.2, 2, -1, NormalContactLaw::waltonBraun);
+    const GasRun restarted = runGas(1000, 0.2, 2, 500, NormalContactLaw::waltonBraun);
+    EXPECT_GT(oneThread.contacts, 100);
+    for (const GasRun* other : {&twoThreads, &restarted}) {
+        EXPECT_EQ(other->cloud.position, oneThread.cloud.position);
+        EXPECT_EQ(other->cloud.velocity, oneThread.cloud.velocity);
+        EXPECT_EQ(other->contacts, oneThread.contacts);
+    }
 }
 
 } // namespace

@@ -448,12 +448,16 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
     if (resolved.collisions.model != CollisionModel::none && largestCollisionRate_ > 0)
         limits.push_back({"collisionTime", 0.25 / largestCollisionRate_});
     if (resolved.collisions.model == CollisionModel::softSphere && radiusMax_ > 0) {
-        // Eq. 2.59: the shortest Hertz contact, of the smallest spheres at the largest speed.
+        // Eq. 2.59: the shortest Hertz contact, of the smallest spheres at the largest speed
+        // (or that of the other contact laws, physics/contact_laws.h).
         const double mass = sphereMass(radiusMin_, resolved.particles.density);
         const ContactBody smallest{mass, radiusMin_, &resolved.particles.material};
-        limits.push_back({"contactDuration",
-                          hertzContactDuration(contactPair(smallest, smallest), referenceSpeed_) /
-                              stepsPerSoftContact});
+        const ContactPair pair = contactPair(smallest, smallest);
+        const double duration =
+            resolved.collisions.softSphere.contactLaw == NormalContactLaw::hertz
+                ? hertzContactDuration(pair, referenceSpeed_)
+                : softContactDuration(pair, softContactLawOf(resolved.collisions), referenceSpeed_);
+        limits.push_back({"contactDuration", duration / stepsPerSoftContact});
     }
     limits.push_back({"outputInterval", resolved.output.interval});
     limits.push_back({"endTime", resolved.time.endTime});

@@ -5,8 +5,8 @@
 //         model       impulse;     // none | impulse (collide-and-stream, Eq. 2.34–2.58)
 //                                  // | softSphere (Hertz–Mindlin forces, Eq. 2.4–2.14)
 //         restitution { model velocityDependent; yieldPressureFactor 3; }
-//         friction    { static 0.3; dynamic 0.3; }
-//         softSphereCoeffs { damping restitution; neighbourSkin 0.2; }
+//         friction    { static 0.3; dynamic 0.3; regularisation none; slipSpeed 1e-3; }
+//         softSphereCoeffs { damping restitution; neighbourSkin 0.2; contactLaw hertz; }
 //     }
 //     surfaces { target { type plane; ... interaction deposit; } }   // absorb | rebound | deposit
 //
@@ -16,6 +16,7 @@
 #pragma once
 
 #include "slides/collide/impulse.h"
+#include "slides/physics/contact_conduction.h"
 #include "slides/physics/restitution.h"
 
 #include <array>
@@ -55,6 +56,9 @@ constexpr std::array<SoftSphereDampingName, 2> softSphereDampingNames() {
 struct SoftSphereSettings {
     SoftSphereDamping damping = SoftSphereDamping::restitution;
     double neighbourSkin = 0.2; ///< Verlet-list skin per largest particle radius
+    NormalContactLaw contactLaw = NormalContactLaw::hertz; ///< physics/contact_laws.h
+    double normalStiffness = 0; ///< k of linearSpringDashpot, k_L of waltonBraun [N/m]
+    double dissipativeTime = 0; ///< A of viscoelasticHertz [s]
 };
 
 /// What a surface does to a particle that reaches it.
@@ -84,7 +88,30 @@ struct CollisionSettings {
     /// Contacts heat their particles by the energy they dissipate (Eq. 2.117), when
     /// temperatures are tracked (physics.heatTransfer).
     bool heating = true;
+    /// Heat conducted between touching soft spheres (physics/contact_conduction.h).
+    ContactConductionSettings conduction;
 };
+
+/// The soft-sphere contact law of the settings: the normal law with its constants, the damping
+/// that restitutes e (hertz: β of softContactLaw or Tsuji's), the Coulomb limit μ_d and its
+/// regularisation.
+inline SoftContactLaw softContactLawOf(const CollisionSettings& collisions) {
+    const double e = collisions.restitution.coefficient;
+    const FrictionSettings& friction = collisions.friction;
+    const SoftSphereSettings& softSphere = collisions.softSphere;
+    SoftContactLaw law{.friction = friction.dynamicCoefficient,
+                       .normalLaw = softSphere.contactLaw,
+                       .normalStiffness = softSphere.normalStiffness,
+                       .restitution = e,
+                       .dissipativeTime = softSphere.dissipativeTime,
+                       .regularisation = friction.regularisation,
+                       .regularisationSpeed = friction.regularisationSpeed};
+    if (softSphere.contactLaw == NormalContactLaw::hertz)
+        law.dampingRatio = softSphere.damping == SoftSphereDamping::tsuji
+                               ? liggghtsDampingRatio(e)
+                               : softContactLaw(e, 0).dampingRatio;
+    return law;
+}
 
 /// Temperature rise [K] of bodies of total heat capacity c Σm sharing the kinetic energy a
 /// contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).

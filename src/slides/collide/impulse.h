@@ -19,12 +19,17 @@
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/physics/regularised_friction.h"
 
 namespace slides {
 
 struct FrictionSettings {
     double staticCoefficient = 0.3;  ///< μ_s
     double dynamicCoefficient = 0.3; ///< μ_d
+    /// Of soft-sphere contacts: the Mindlin spring (none) or a regularised Coulomb law
+    /// (physics/regularised_friction.h) over the slip speed ε.
+    FrictionRegularisation regularisation = FrictionRegularisation::none;
+    double regularisationSpeed = 1e-3; ///< ε [m/s]
 };
 
 /// The velocities of one body at a contact; a rigid body has inverseMass = 0.

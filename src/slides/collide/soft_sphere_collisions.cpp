@@ -29,11 +29,7 @@ SoftSphereCollisions::SoftSphereCollisions(const CollisionSettings& collisions,
                                            const std::vector<Surface>& surfaces)
     : settings_(collisions), particles_(particles), surfaces_(surfaces),
       newWallContacts_(surfaces.size(), 0) {
-    const double e = collisions.restitution.coefficient;
-    const double friction = collisions.friction.dynamicCoefficient;
-    law_ = collisions.softSphere.damping == SoftSphereDamping::tsuji
-               ? SoftContactLaw{liggghtsDampingRatio(e), friction}
-               : softContactLaw(e, friction);
+    law_ = softContactLawOf(collisions);
     // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
     const ContactBody particle{1.0, 1.0, &particles.material};
     particleModuli_ = contactPair(particle, particle);
@@ -142,6 +138,7 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
         const auto found = std::lower_bound(handed.begin(), handed.end(), key, byIds);
         if (found != handed.end() && !byIds(key, *found)) {
             entry.spring.displacement = found->displacement;
+            entry.spring.largestOverlap = found->largestOverlap;
             entry.touching = true;
         }
     }
@@ -193,6 +190,8 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
     };
     std::fill(newWallContacts_.begin(), newWallContacts_.end(), 0);
     loads_.resize(entries_.size());
+    const bool conducts =
+        settings_.conduction.model != ContactConduction::none && !cloud.temperature.empty();
     long begun = 0;
     const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
     std::vector<std::vector<std::uint32_t>> touchingPerThread(1);
@@ -225,6 +224,10 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                                       entry.spring, dt);
             }
             const bool touching = load.overlap > 0;
+            if (touching && conducts && entry.second >= 0) // Eq. 2.118
+                load.conductedPower = contactConductance(settings_.conduction, pair.radius) *
+                                      (cloud.temperature[static_cast<std::size_t>(entry.second)] -
+                                       cloud.temperature[entry.first]);
             if (touching && !entry.touching) {
                 if (entry.second >= 0) {
                     ++begun;
@@ -259,6 +262,9 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
             const bool second = entryOf_[slot] % 2 == 1;
             force += second ? Vec3(-load.force) : load.force;
             torque += second ? load.torqueOnSecond : load.torqueOnFirst;
+            if (conducts) // the pair's two flows are equal and opposite
+                heat += (second ? -load.conductedPower : load.conductedPower) * dt /
+                        (sphereMass(cloud.radius[i], density) * particles_.specificHeat);
             if (heats && load.dissipatedPower > 0) {
                 const double masses =
                     sphereMass(cloud.radius[entry.first], density) +
@@ -271,7 +277,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
         }
         cloud.contactForce[i] = force;
         cloud.contactTorque[i] = torque;
-        if (heats) cloud.temperature[i] += heat;
+        if (heats || conducts) cloud.temperature[i] += heat;
     }
 }
 
@@ -306,7 +312,7 @@ ContactSpring SoftSphereCollisions::springOf(const Entry& entry) const {
     const ParticleId second = entry.second >= 0
                                   ? builtIds_[static_cast<std::size_t>(entry.second)]
                                   : wallId(static_cast<std::size_t>(-1 - entry.second));
-    return {builtIds_[entry.first], second, entry.spring.displacement};
+    return {builtIds_[entry.first], second, entry.spring.displacement, entry.spring.largestOverlap};
 }
 
 std::vector<ContactSpring> SoftSphereCollisions::springs() const {

@@ -17,7 +17,9 @@
 //    contact carry a load, so the half kicks visit only those while the cloud keeps them at
 //    their indices (all particles otherwise, skipping zero loads alike).
 // With temperatures tracked (physics.heatTransfer, collisions.heating), each contact's dissipated
-// power (ContactLoad::dissipatedPower) over the step heats its particles alike (Eq. 2.117).
+// power (ContactLoad::dissipatedPower) over the step heats its particles alike (Eq. 2.117); with
+// collisions.conduction, touching particles exchange heat through the gap (Eq. 2.118,
+// physics/contact_conduction.h) with the temperatures at the step's start (walls do not).
 // Soft walls are the surfaces whose interaction is rebound (meetsBySoftContact); absorbing and
 // deposit surfaces, and the deposit, keep meeting particles at the touch (surfaces/).
 //
@@ -47,6 +49,7 @@ struct ContactSpring {
     ParticleId first = 0;  ///< the lower id of a pair
     ParticleId second = 0; ///< the other particle, or wallId(surface)
     Vec3 displacement = Vec3::Zero();
+    double largestOverlap = 0; ///< δ_max so far [m] (waltonBraun)
 };
 
 /// The id that names surface s as the second body of a contact.

@@ -14,15 +14,17 @@ ContactLoad contactLoad(const ContactPair& pair, const SoftContactLaw& law, doub
     const Vec3 contactVelocityB = velocityB + leverB * spinB.cross(normal);
     const Vec3 slip = contactVelocityA - contactVelocityB;
     const double closingSpeed = -slip.dot(normal);
-    const double normalForce = hertzNormalForce(pair, law, overlap, closingSpeed);
+    const double normalForce =
+        normalContactForce(pair, law, overlap, closingSpeed, spring.largestOverlap);
     const Vec3 tangentialForce =
         mindlinTangentialForce(spring, pair, law, overlap, normal, slip, normalForce, dt);
     const Vec3 nCrossFt = normal.cross(tangentialForce);
     // Dissipation: the normal force beyond the elastic one, and the tangential force's work
     // less what the spring stores (all of it at the Coulomb limit, where the spring stays put).
-    const double elasticForce = hertzNormalForce(pair, {0, law.friction}, overlap, 0);
+    const double elasticForce = elasticNormalForce(pair, law, overlap);
     const Vec3 tangentialSlip = slip - slip.dot(normal) * normal;
-    const bool sliding = tangentialForce.norm() >= law.friction * normalForce * (1 - 1e-12);
+    const bool sliding = law.regularisation != FrictionRegularisation::none ||
+                         tangentialForce.norm() >= law.friction * normalForce * (1 - 1e-12);
     const double storedPower =
         sliding ? 0.0 : mindlinStiffness(pair, overlap) * spring.displacement.dot(tangentialSlip);
     const double tangentialPower = -tangentialForce.dot(tangentialSlip) - storedPower;

@@ -1,5 +1,5 @@
 // Soft-sphere contact load of a sphere pair or a sphere and a plane wall: force and torques
-// from the Hertz–Mindlin laws of physics/soft_contact.h, for a DEM step loop.
+// from the normal and tangential laws of physics/soft_contact.h, for a DEM step loop.
 //
 // Reference: Section 2.2 of the reference (Eq. 2.4–2.14), forms of LIGGGHTS `hertz` +
 // `tangential history`. The torques act at the contact point on the plane of the overlap
@@ -31,6 +31,8 @@ struct ContactLoad {
     /// (F_n − F_el) dδ/dt of the normal damping (and of the no-pull clamp), γ_t v_t² while the
     /// tangential spring sticks, −F_t·v_t while it slides at the Coulomb limit.
     double dissipatedPower = 0;
+    /// Heat flowing into the first body from the second [W] (Eq. 2.118; set by the caller).
+    double conductedPower = 0;
 };
 
 /// Load of sphere a on sphere b (force on a). The spring is that pair's; it is reset when the

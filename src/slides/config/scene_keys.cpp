@@ -395,10 +395,22 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions.friction.dynamic", K::scalar, "-", "0.3", {}, R::nonNegative,
          "μ_d: tangential impulse of a slipping contact per normal impulse; the Coulomb limit "
          "μ of softSphere contacts."},
+        {"collisions.friction.regularisation", K::word, "-", "none",
+         namesOf(frictionRegularisationNames()), R::any,
+         "softSphere tangential law: none, the Mindlin spring with the Coulomb limit (Eq. 2.5, "
+         "2.14); or regularised Coulomb friction μ R(v_slip) F_n (Eq. 2.65): linear (2.66), tanh "
+         "(2.67), algebraic (2.68). A sphere sliding on a plane rolls from v = 5/7 v0 on."},
+        {"collisions.friction.slipSpeed", K::scalar, "m/s", "1e-3", {}, R::positive,
+         "ε of the regularised friction (Eq. 2.66–2.68): slip speed over which it builds up."},
         {"collisions.heating", K::boolean, "-", "on", {}, R::any,
          "Contacts (impulse pairs, rebounds, sticking; soft-sphere damping and sliding) heat "
          "their particles by the energy they dissipate (Eq. 2.117), shared by heat capacity; "
          "with physics.heatTransfer on."},
+        {"collisions.conduction", K::word, "-", "none", namesOf(contactConductionNames()),
+         R::any,
+         "Heat conducted between touching softSphere particles, with physics.heatTransfer on: "
+         "none, or batchelorOBrien: Q = π K_f a ΔT ln(K_p/K_f)², a = 2R* (Eq. 2.118), from "
+         "particles.thermalConductivity and fluid.thermalConductivity."},
         {"collisions.softSphereCoeffs", K::dictionary, "-", "-", {}, R::any,
          "The softSphere model (collide/soft_sphere_collisions.h); its damping follows from "
          "restitution.coefficient, which must then be constant."},
@@ -409,19 +421,30 @@ std::vector<KeyDeclaration> declareKeys() {
         {"collisions.softSphereCoeffs.neighbourSkin", K::scalar, "-", "0.2", {}, R::nonNegative,
          "Verlet-list skin per largest particle radius: the list is rebuilt when a particle has "
          "moved half of it (0: every step)."},
+        {"collisions.softSphereCoeffs.contactLaw", K::word, "-", "hertz",
+         namesOf(normalContactLawNames()), R::any,
+         "Normal force law (physics/contact_laws.h): hertz (Eq. 2.4, damped as Eq. 2.6–2.8); "
+         "linearSpringDashpot (Eq. 2.6–2.7: e = exp(−πζ/√(1−ζ²)), t_c = π/ω_d); "
+         "viscoelasticHertz (Brilliantov, Eq. 2.8: e falls with impact speed); waltonBraun "
+         "(Eq. 2.9–2.10: k_U = k_L/e², e = √(k_L/k_U)). Verified on Chung & Ooi tests 1–3."},
+        {"collisions.softSphereCoeffs.normalStiffness", K::scalar, "N/m", "-", {}, R::positive,
+         "k of linearSpringDashpot, loading k_L of waltonBraun (Eq. 2.6, 2.9)."},
+        {"collisions.softSphereCoeffs.dissipativeTime", K::scalar, "s", "-", {}, R::nonNegative,
+         "Brilliantov's A of viscoelasticHertz: F = K_n(δ^{3/2} + 3/2 A √δ dδ/dt) (Eq. 2.8)."},
 
         {"deposition", K::dictionary, "-", "-", {}, R::any,
          "Adhesion on surfaces whose interaction is deposit, and on their deposit (Eq. 5.7–5.9)."},
         {"deposition.adhesion", K::word, "-", "interfaceEnergy", namesOf(adhesionModelNames()),
          R::any,
          "interfaceEnergy: F = 2πR*·2√(γ1γ2) (Eq. 2.72–2.74, 5.7); hamaker: F = A R*/(6ε0²) "
-         "(Eq. 2.75)."},
+         "(Eq. 2.75); jkr: the JKR pull-off 3/2 πWR* (Eq. 2.84); dmt: 2πWR* (Eq. 2.91); "
+         "taborMap: JKR's where Tabor's μ_T (Eq. 2.92, ε0 = contactSeparation) ≥ 1, else DMT's."},
         {"deposition.adhesionFactor", K::scalar, "-", "1", {}, R::positive,
          "α multiplying the adhesion force (Table 5.2 assumes 5000)."},
         {"deposition.hamakerConstant", K::scalar, "J", "-", {}, R::positive,
          "Hamaker constant A (adhesion hamaker)."},
         {"deposition.contactSeparation", K::scalar, "m", "4e-10", {}, R::positive,
-         "Separation ε0 of surfaces in contact (adhesion hamaker)."},
+         "Separation ε0 of surfaces in contact (adhesion hamaker, taborMap)."},
 
         {"surfaces", K::dictionary, "-", "", {}, R::any,
          "Named surfaces that particles meet."},

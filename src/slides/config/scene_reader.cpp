@@ -653,6 +653,16 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
     collisions.friction.staticCoefficient = keys.scalar("collisions.friction.static");
     collisions.friction.dynamicCoefficient = keys.scalar("collisions.friction.dynamic");
     collisions.heating = keys.boolean("collisions.heating");
+    ContactConductionSettings& conduction = collisions.conduction;
+    conduction.model = *valueNamed(contactConductionNames(), keys.word("collisions.conduction"));
+    if (conduction.model != ContactConduction::none) {
+        if (collisions.model != CollisionModel::softSphere)
+            keys.fail("collisions.conduction",
+                      "needs collisions.model softSphere, whose contacts last");
+        keys.require("particles.thermalConductivity", "by collisions.conduction");
+        conduction.particleConductivity = scene.particles.thermalConductivity;
+        conduction.gasConductivity = scene.fluid.thermalConductivity;
+    }
     if (collisions.model == CollisionModel::softSphere) {
         // The damped Hertz impact restitutes one e whatever the speed (physics/soft_contact.h).
         if (keys.has("collisions.restitution.model") &&
@@ -668,6 +678,23 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
             *valueNamed(softSphereDampingNames(), keys.word("collisions.softSphereCoeffs.damping"));
         collisions.softSphere.neighbourSkin =
             keys.scalar("collisions.softSphereCoeffs.neighbourSkin");
+        SoftSphereSettings& softSphere = collisions.softSphere;
+        softSphere.contactLaw = *valueNamed(normalContactLawNames(),
+                                            keys.word("collisions.softSphereCoeffs.contactLaw"));
+        if (softSphere.contactLaw == NormalContactLaw::linearSpringDashpot ||
+            softSphere.contactLaw == NormalContactLaw::waltonBraun) {
+            keys.require("collisions.softSphereCoeffs.normalStiffness",
+                         "by collisions.softSphereCoeffs.contactLaw");
+            softSphere.normalStiffness = keys.scalar("collisions.softSphereCoeffs.normalStiffness");
+        }
+        if (softSphere.contactLaw == NormalContactLaw::viscoelasticHertz) {
+            keys.require("collisions.softSphereCoeffs.dissipativeTime",
+                         "by collisions.softSphereCoeffs.contactLaw viscoelasticHertz");
+            softSphere.dissipativeTime = keys.scalar("collisions.softSphereCoeffs.dissipativeTime");
+        }
+        collisions.friction.regularisation = *valueNamed(
+            frictionRegularisationNames(), keys.word("collisions.friction.regularisation"));
+        collisions.friction.regularisationSpeed = keys.scalar("collisions.friction.slipSpeed");
     }
 
     AdhesionSettings& adhesion = scene.deposition;
@@ -710,9 +737,9 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
         requireMaterial(base + ".material", false, "by interaction of surface " + surface.name);
         if (surface.interaction != SurfaceInteraction::deposit) continue;
         anyDeposit = true;
-        if (adhesion.model == AdhesionModel::interfaceEnergy)
+        if (adhesion.model != AdhesionModel::hamaker) // the work of adhesion W₁₂
             keys.require(base + ".material.surfaceEnergy",
-                         "by deposition.adhesion interfaceEnergy");
+                         "by deposition.adhesion " + keys.word("deposition.adhesion"));
     }
     if (anyContact)
         requireMaterial("particles.material", velocityDependent,
@@ -724,9 +751,9 @@ void readCollisionsAndDeposition(const KeyReader& keys, Scene& scene) {
             keys.require("particles.material.bulkModulus", "by a deposit surface (Eq. 5.9)");
             keys.require("particles.material.shearModulus", "by a deposit surface (Eq. 5.9)");
         }
-        if (adhesion.model == AdhesionModel::interfaceEnergy)
+        if (adhesion.model != AdhesionModel::hamaker)
             keys.require("particles.material.surfaceEnergy",
-                         "by deposition.adhesion interfaceEnergy");
+                         "by deposition.adhesion " + keys.word("deposition.adhesion"));
     }
 }
 

@@ -262,7 +262,8 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
             readColumn(file, g + "/springs/" + name, array);
         });
         if (springs.second.size() != springs.first.size() ||
-            springs.displacement.size() != springs.first.size())
+            springs.displacement.size() != springs.first.size() ||
+            springs.largestOverlap.size() != springs.first.size())
             refuse(file.path(), "damaged: contact spring columns differ in length");
     }
     const auto frameTimes = file.readDoubles(g + "/frameTimes", 1);

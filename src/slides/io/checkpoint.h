@@ -44,11 +44,13 @@ RunFingerprint fingerprintOf(const std::filesystem::path& dictionaryFile, double
 struct SpringColumns {
     std::vector<std::uint64_t> first, second;
     std::vector<Vec3> displacement;
+    std::vector<double> largestOverlap; ///< δ_max of the contact (waltonBraun's unloading)
 
     template <typename Columns, typename Visitor> static void forEach(Columns& c, Visitor visit) {
         visit("first", c.first);
         visit("second", c.second);
         visit("displacement", c.displacement);
+        visit("largestOverlap", c.largestOverlap);
     }
 };
 

@@ -8,7 +8,10 @@
 //     four times Eq. 2.73's for equal ones; the adhesion factor absorbs such constants.)
 //   hamaker: F_adh = A R* / (6 ε₀²), the sphere–plane van der Waals force at contact
 //     separation ε₀ (Eq. 2.72 with Eq. 2.75's U = −A/(12π ε₀²)).
-// Both are multiplied by the adhesion factor α_adh (Table 5.2 assumes 5000).
+//   jkr: F_adh = 3/2 π W₁₂ R* (Eq. 2.84), dmt: 2π W₁₂ R* (Eq. 2.91), taborMap: JKR's where
+//     Tabor's μ_T of the pair (Eq. 2.92, with ε₀) is at least 1, else DMT's
+//     (physics/adhesive_contact.h).
+// All are multiplied by the adhesion factor α_adh (Table 5.2 assumes 5000).
 // A particle sticks when its normal rebound speed of Eq. 5.8 is not positive, which for an
 // inelastic impact (δt − δt₁ = 1.2 e δt₁, Eq. 2.64) is (Eq. 5.9)
 //   v₀ < 0.2 F_adh δt₁ / m*,
@@ -16,8 +19,10 @@
 //
 //     deposition { adhesion interfaceEnergy; adhesionFactor 5000; }
 //     deposition { adhesion hamaker; hamakerConstant 1e-19; contactSeparation 4e-10; }
+//     deposition { adhesion taborMap; adhesionFactor 1; contactSeparation 4e-10; }
 #pragma once
 
+#include "slides/physics/adhesive_contact.h"
 #include "slides/physics/contact_pair.h"
 #include "slides/physics/restitution.h"
 
@@ -27,7 +32,7 @@
 
 namespace slides {
 
-enum class AdhesionModel { interfaceEnergy, hamaker };
+enum class AdhesionModel { interfaceEnergy, hamaker, jkr, dmt, taborMap };
 
 struct AdhesionModelName {
     AdhesionModel value;
@@ -35,9 +40,12 @@ struct AdhesionModelName {
 };
 
 // How to add a model: an enumerator, its name here, its case in adhesionForce.
-constexpr std::array<AdhesionModelName, 2> adhesionModelNames() {
-    return {
-        {{AdhesionModel::interfaceEnergy, "interfaceEnergy"}, {AdhesionModel::hamaker, "hamaker"}}};
+constexpr std::array<AdhesionModelName, 5> adhesionModelNames() {
+    return {{{AdhesionModel::interfaceEnergy, "interfaceEnergy"},
+             {AdhesionModel::hamaker, "hamaker"},
+             {AdhesionModel::jkr, "jkr"},
+             {AdhesionModel::dmt, "dmt"},
+             {AdhesionModel::taborMap, "taborMap"}}};
 }
 
 struct AdhesionSettings {
@@ -55,6 +63,16 @@ inline double adhesionForce(const AdhesionSettings& settings, const ContactPair&
     case AdhesionModel::hamaker:
         return settings.factor * settings.hamakerConstant * pair.radius /
                (6 * settings.contactSeparation * settings.contactSeparation);
+    case AdhesionModel::jkr:
+        return -settings.factor * jkrPullOffForce(pair.radius, pair.workOfAdhesion);
+    case AdhesionModel::dmt:
+        return -settings.factor * dmtPullOffForce(pair.radius, pair.workOfAdhesion);
+    case AdhesionModel::taborMap: {
+        const bool jkr = taborSelectsJkr(taborParameter(
+            pair.radius, pair.workOfAdhesion, pair.youngsModulus, settings.contactSeparation));
+        return -settings.factor * (jkr ? jkrPullOffForce(pair.radius, pair.workOfAdhesion)
+                                       : dmtPullOffForce(pair.radius, pair.workOfAdhesion));
+    }
     }
     return 0;
 }

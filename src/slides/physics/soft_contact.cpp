@@ -74,6 +74,52 @@ double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, doub
     return std::max(0.0, stiffness * overlap + damping * closingSpeed);
 }
 
+double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                          double closingSpeed, double& largestOverlap) {
+    largestOverlap = std::max(largestOverlap, overlap);
+    switch (law.normalLaw) {
+    case NormalContactLaw::hertz: return hertzNormalForce(pair, law, overlap, closingSpeed);
+    case NormalContactLaw::linearSpringDashpot: {
+        const double dampingRatio = linearDampingRatio(law.restitution);
+        const double damping = 2 * dampingRatio * std::sqrt(law.normalStiffness * pair.mass);
+        return law.normalStiffness * overlap + damping * closingSpeed;
+    }
+    case NormalContactLaw::viscoelasticHertz: {
+        const double stiffness = 4.0 / 3.0 * pair.youngsModulus * std::sqrt(pair.radius); // K_n
+        const double root = std::sqrt(overlap);
+        return std::max(0.0,
+                        stiffness * root * (overlap + 1.5 * law.dissipativeTime * closingSpeed));
+    }
+    case NormalContactLaw::waltonBraun:
+        return waltonBraunForce(law.normalStiffness, law.restitution, overlap, largestOverlap);
+    }
+    return 0;
+}
+
+double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap) {
+    switch (law.normalLaw) {
+    case NormalContactLaw::hertz:
+    case NormalContactLaw::viscoelasticHertz: // k_n δ, k_n = 4/3 E* √(R*δ) (Eq. 2.4)
+        return 4.0 / 3.0 * pair.youngsModulus * contactRadius(pair, overlap) * overlap;
+    case NormalContactLaw::linearSpringDashpot:
+    case NormalContactLaw::waltonBraun: return law.normalStiffness * overlap;
+    }
+    return 0;
+}
+
+double softContactDuration(const ContactPair& pair, const SoftContactLaw& law, double impactSpeed) {
+    switch (law.normalLaw) {
+    case NormalContactLaw::hertz:
+    case NormalContactLaw::viscoelasticHertz: return hertzContactDuration(pair, impactSpeed);
+    case NormalContactLaw::linearSpringDashpot:
+        return linearContactDuration(law.normalStiffness, pair.mass,
+                                     linearDampingRatio(law.restitution));
+    case NormalContactLaw::waltonBraun:
+        return waltonBraunContactDuration(law.normalStiffness, pair.mass, law.restitution);
+    }
+    return 0;
+}
+
 double mindlinStiffness(const ContactPair& pair, double overlap) {
     return 8.0 * pair.shearModulus * contactRadius(pair, overlap);
 }
@@ -85,14 +131,21 @@ double hertzElasticEnergy(const ContactPair& pair, double overlap) {
 Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
                             const SoftContactLaw& law, double overlap, const Vec3& normal,
                             const Vec3& slipVelocity, double normalForce, double dt) {
+    const Vec3 tangentialSlip = slipVelocity - slipVelocity.dot(normal) * normal;
+    if (law.regularisation != FrictionRegularisation::none) {
+        // Eq. 2.65: against the slip, μ R(|v_t|) F_n; the spring stays at zero.
+        const double slipSpeed = tangentialSlip.norm();
+        if (!(slipSpeed > 0)) return Vec3::Zero();
+        return -law.friction * std::max(0.0, normalForce) *
+               regularisedFriction(law.regularisation, slipSpeed, law.regularisationSpeed) /
+               slipSpeed * tangentialSlip;
+    }
     // Rotate the stored displacement into the current tangent plane, keeping its length.
     Vec3& xi = spring.displacement;
     const double length = xi.norm();
     xi -= xi.dot(normal) * normal;
     const double projected = xi.norm();
     if (projected > 0) xi *= length / projected;
-
-    const Vec3 tangentialSlip = slipVelocity - slipVelocity.dot(normal) * normal;
     xi += tangentialSlip * dt;
 
     const double stiffness = mindlinStiffness(pair, overlap);
@@ -101,7 +154,7 @@ Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
 
     // Coulomb limit (Eq. 2.14): scale the force down to μF_n and shorten the spring so that it
     // gives exactly that force at this slip velocity (the stick force resumes from there).
-    const double limit = law.friction * normalForce;
+    const double limit = law.friction * std::max(0.0, normalForce); // a pulling dashpot: no grip
     const double magnitude = force.norm();
     if (magnitude > limit) {
         const double scale = magnitude > 0 ? limit / magnitude : 0.0;

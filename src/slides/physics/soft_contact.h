@@ -13,6 +13,8 @@
 //   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
 // Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
 // the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
+// The other normal laws of Eq. 2.6–2.10 (physics/contact_laws.h) and the regularised friction of
+// Eq. 2.65–2.68 (physics/regularised_friction.h) are options of the same contact.
 // A wall is a body of infinite radius and mass (and, if rigid, infinite moduli); the pair's
 // effective properties are physics/contact_pair.h's.
 //
@@ -20,16 +22,25 @@
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/physics/contact_laws.h"
 #include "slides/physics/contact_pair.h"
+#include "slides/physics/regularised_friction.h"
 
 #include <limits>
 
 namespace slides {
 
-/// The damping ratio β and Coulomb friction μ of a contact.
+/// The damping ratio β and Coulomb friction μ of a contact; the normal law and its constants
+/// (physics/contact_laws.h), the friction's regularisation (physics/regularised_friction.h).
 struct SoftContactLaw {
-    double dampingRatio = 0; ///< β: 0 elastic, negative with damping
+    double dampingRatio = 0; ///< β: 0 elastic, negative with damping (hertz)
     double friction = 0;     ///< μ
+    NormalContactLaw normalLaw = NormalContactLaw::hertz;
+    double normalStiffness = 0; ///< k (linearSpringDashpot), k_L (waltonBraun) [N/m]
+    double restitution = 1;     ///< e of linearSpringDashpot and waltonBraun
+    double dissipativeTime = 0; ///< Brilliantov's A (viscoelasticHertz) [s]
+    FrictionRegularisation regularisation = FrictionRegularisation::none;
+    double regularisationSpeed = 0; ///< ε of Eq. 2.66–2.68 [m/s]
 };
 
 /// LIGGGHTS' (Tsuji's) β = ln e / √(ln²e + π²). Exact for a linear spring-dashpot that may pull;
@@ -51,6 +62,21 @@ SoftContactLaw softContactLaw(double restitution, double friction);
 double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
                         double closingSpeed);
 
+/// Normal force [N] of the law on overlap δ > 0 closing at dδ/dt: Hertz as hertzNormalForce,
+/// the other laws as physics/contact_laws.h gives them. largestOverlap is the contact's δ_max
+/// so far, updated here (Walton–Braun's unloading starts from it).
+double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                          double closingSpeed, double& largestOverlap);
+
+/// The conservative part of the law's normal force at overlap δ [N] (the loading curve of
+/// Walton–Braun): what the force less it does is dissipated.
+double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap);
+
+/// Duration of a head-on impact at speed v under the law [s]: Hertz's elastic duration
+/// (hertz, viscoelasticHertz), π/ω_d (linearSpringDashpot), the time the force acts
+/// (waltonBraun).
+double softContactDuration(const ContactPair& pair, const SoftContactLaw& law, double impactSpeed);
+
 /// Elastic energy 8/15 E*√R* δ^{5/2} [J] stored in a Hertz contact (the integral of Eq. 2.4).
 double hertzElasticEnergy(const ContactPair& pair, double overlap);
 
@@ -58,6 +84,7 @@ double hertzElasticEnergy(const ContactPair& pair, double overlap);
 /// Lives as long as the contact; a new contact starts from zero.
 struct TangentialSpring {
     Vec3 displacement = Vec3::Zero(); ///< ξ [m], in the tangent plane
+    double largestOverlap = 0;        ///< δ_max of the contact so far [m] (waltonBraun)
 };
 
 /// Mindlin's tangential stiffness k_t = S_t = 8 G* √(R* δ) [N/m] (Eq. 2.5, inverted).
@@ -66,6 +93,7 @@ double mindlinStiffness(const ContactPair& pair, double overlap);
 /// Tangential force [N] on the first body (Eq. 2.5, 2.14): the spring is rotated into the
 /// tangent plane of the current normal n (keeping its length), stretched by v_t dt, and the force
 /// −k_t ξ − γ_t v_t truncated at μ F_n, the spring shortened to match (Cundall & Strack).
+/// With a regularisation the spring is not used: −μ R(|v_t|) F_n v_t/|v_t| (Eq. 2.65–2.68).
 /// slipVelocity is the first body's contact-point velocity relative to the second's.
 Vec3 mindlinTangentialForce(TangentialSpring& spring, const ContactPair& pair,
                             const SoftContactLaw& law, double overlap, const Vec3& normal,

@@ -11,6 +11,7 @@ void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nex
             springs->first.push_back(spring.first);
             springs->second.push_back(spring.second);
             springs->displacement.push_back(spring.displacement);
+            springs->largestOverlap.push_back(spring.largestOverlap);
         }
     }
     writeCheckpoint(output.directory(), stepper.snapshot(), springs ? &*springs : nullptr,
@@ -20,8 +21,8 @@ void writeCheckpoint(const RunOutput& output, const Stepper& stepper, double nex
 void resumeFromCheckpoint(Stepper& stepper, CheckpointState&& state) {
     std::vector<ContactSpring> springs;
     for (std::size_t i = 0; i < state.springs.first.size(); ++i)
-        springs.push_back(
-            {state.springs.first[i], state.springs.second[i], state.springs.displacement[i]});
+        springs.push_back({state.springs.first[i], state.springs.second[i],
+                           state.springs.displacement[i], state.springs.largestOverlap[i]});
     stepper.resume(state.counters, std::move(state.cloud), std::move(state.arrivals),
                    std::move(springs));
 }
