@@ -145,13 +145,9 @@ template <typename T> void InterpolableField<T>::refreshFaceMidpoints(const Foam
     }
 }
 
-template <typename T>
-T InterpolableField<T>::value(const FoamMesh& mesh, const TetLocation& at) const {
-    const auto ring = mesh.pointsOf(at.face);
-    const int n = static_cast<int>(ring.size());
+template <typename T> T InterpolableField<T>::value(const FoamMesh&, const TetLocation& at) const {
     return T(at.weights[0] * cells[at.cell] + at.weights[1] * faceMidpoints[at.face] +
-             at.weights[2] * points[ring[at.edge]] +
-             at.weights[3] * points[ring[(at.edge + 1) % n]]);
+             at.weights[2] * points[at.points[0]] + at.weights[3] * points[at.points[1]]);
 }
 
 template struct InterpolableField<double>;

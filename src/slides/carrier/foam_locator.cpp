@@ -127,8 +127,13 @@ std::optional<TetLocation> FoamLocator::locateInCell(const Vec3& point, int cell
         const int n = static_cast<int>(mesh_.pointsOf(face).size());
         for (int edge = 0; edge < n; ++edge) {
             const auto weights = barycentricWeights(vertices(cell, face, edge), point);
-            if (*std::min_element(weights.begin(), weights.end()) >= -tolerance)
-                return TetLocation{cell, face, edge, weights, -1, tetIndex(cell, face, edge)};
+            if (*std::min_element(weights.begin(), weights.end()) >= -tolerance) {
+                const auto ring = mesh_.pointsOf(face);
+                return TetLocation{cell, face,
+                                   edge, weights,
+                                   -1,   tetIndex(cell, face, edge),
+                                   -1,   {ring[edge], ring[(edge + 1) % n]}};
+            }
         }
     }
     return std::nullopt;
@@ -239,14 +244,14 @@ TetLocation FoamLocator::walk(const Vec3& point, int startTet, int& boundaryFace
         const int slot = tet / 2, first = mesh_.faceOffsets[face],
                   end = mesh_.faceOffsets[face + 1];
         const int next = slot + 1 < end ? slot + 1 : first;
-        const auto weights = barycentricWeights({mesh_.cellCentres[cell], faceMidpoints_[face],
-                                                 mesh_.points[mesh_.facePoints[slot]],
-                                                 mesh_.points[mesh_.facePoints[next]]},
-                                                point);
+        const int a = mesh_.facePoints[slot], b = mesh_.facePoints[next];
+        const auto weights = barycentricWeights(
+            {mesh_.cellCentres[cell], faceMidpoints_[face], mesh_.points[a], mesh_.points[b]},
+            point);
         const int k =
             static_cast<int>(std::min_element(weights.begin(), weights.end()) - weights.begin());
         if (weights[k] >= -tolerance)
-            return TetLocation{cell, face, slot - first, weights, -1, tet};
+            return TetLocation{cell, face, slot - first, weights, -1, tet, -1, {a, b}};
         switch (k) {
         case 0: { // across the mesh face into the next cell: the same triangle, the other side
             const int across = mesh_.across(face, cell);

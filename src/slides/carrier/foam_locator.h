@@ -36,6 +36,7 @@ struct TetLocation {
     int exitPatch = -1;
     int tet = -1;
     int exitFace = -1;
+    std::array<int, 2> points{-1, -1}; ///< the mesh points of vertices 2 and 3 (when found)
 
     bool found() const { return cell >= 0; }
 };
