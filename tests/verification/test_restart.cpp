@@ -36,6 +36,7 @@ enum class ExtraPhysics {
     dispersionAndHeat,    ///< eddy states with their random-event counters, temperatures
     collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
     softSpheres,          ///< contact loads and the springs of touching contacts
+    electromagnetic,      ///< the particles' charges (Lorentz force, Eq. 2.93)
 };
 
 /// Inserts entry after the first occurrence of anchor in text.
@@ -90,6 +91,10 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
         ASSERT_NE(end, std::string::npos);
         text.replace(end, 20, "endTime         0.015;");
     }
+    if (physics == ExtraPhysics::electromagnetic)
+        insertAfter(text, "buoyancy    on;",
+                    " electromagnetic { model lorentz; E (0 -2e5 0); B (0 0 0.1);"
+                    " charge { model surface; value 2e-5; } }");
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
 
@@ -200,7 +205,8 @@ std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
                              "WithFiniteReynoldsHistory",
                              "WithDispersionAndHeat",
                              "WithCollisionsAndDeposit",
-                             "WithSoftSpheres"};
+                             "WithSoftSpheres",
+                             "WithElectromagneticForces"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
@@ -214,7 +220,8 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                                          KillMoment{100, ExtraPhysics::finiteReynolds},
                                          KillMoment{100, ExtraPhysics::dispersionAndHeat},
                                          KillMoment{100, ExtraPhysics::collisionsAndDeposit},
-                                         KillMoment{100, ExtraPhysics::softSpheres}),
+                                         KillMoment{100, ExtraPhysics::softSpheres},
+                                         KillMoment{100, ExtraPhysics::electromagnetic}),
                          killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.
