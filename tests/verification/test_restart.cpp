@@ -91,10 +91,14 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
         ASSERT_NE(end, std::string::npos);
         text.replace(end, 20, "endTime         0.015;");
     }
-    if (physics == ExtraPhysics::electromagnetic)
+    if (physics == ExtraPhysics::electromagnetic) {
         insertAfter(text, "buoyancy    on;",
                     " electromagnetic { model lorentz; E (0 -2e5 0); B (0 0 0.1);"
                     " charge { model surface; value 2e-5; } }");
+        const auto end = text.find("endTime         0.1;");
+        ASSERT_NE(end, std::string::npos);
+        text.replace(end, 20, "endTime         0.015;");
+    }
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
 
