@@ -233,6 +233,28 @@ TEST_F(VtkOutput, FrameCarriesTemperatureAndSpinOnlyWhereTracked) {
     EXPECT_EQ(plain->GetPointData()->GetNumberOfArrays(), 5);
 }
 
+TEST_F(VtkOutput, FrameCarriesChargeOnlyWhenCharged) {
+    // Electromagnetic forces (physics/electromagnetic.h): the charge array, bit-exact, read back
+    // for a restart's rewrite; an uncharged frame has none.
+    const KnownFrame known;
+    const std::vector<double> charge{1.6e-12, -1.0 / 3 * 1e-15, 0};
+    ParticleFrame frame = known.frame();
+    frame.charge = charge;
+    writeParticlesVtp(directory_ / "charged.vtp", frame);
+    const auto data = readVtp(directory_ / "charged.vtp");
+    auto* array = pointArray(data, "charge", VTK_DOUBLE, 1);
+    ASSERT_TRUE(array);
+    for (vtkIdType n = 0; n < 3; ++n)
+        EXPECT_EQ(array->GetComponent(n, 0), charge[static_cast<std::size_t>(n)]);
+    const StoredParticleFrame stored = readParticlesVtp(directory_ / "charged.vtp");
+    EXPECT_EQ(stored.charge, charge);
+    const ParticleFrame again = stored.view(ParticleFieldSet::all(), false, false, true);
+    ASSERT_TRUE(again.charge.has_value());
+    EXPECT_EQ(again.charge->size(), 3u);
+    writeParticlesVtp(directory_ / "uncharged.vtp", known.frame());
+    EXPECT_EQ(readVtp(directory_ / "uncharged.vtp")->GetPointData()->GetArray("charge"), nullptr);
+}
+
 TEST_F(VtkOutput, FrameWithMismatchedArraysIsRejected) {
     KnownFrame known;
     ParticleFrame shortSpin = known.frame();

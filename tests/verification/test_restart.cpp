@@ -36,6 +36,7 @@ enum class ExtraPhysics {
     dispersionAndHeat,    ///< eddy states with their random-event counters, temperatures
     collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
     softSpheres,          ///< contact loads and the springs of touching contacts
+    electromagnetic,      ///< the particles' charges (Lorentz force, Eq. 2.93)
 };
 
 /// Inserts entry after the first occurrence of anchor in text.
@@ -86,6 +87,14 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
             text,
             "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n",
             "collisions { model softSphere; restitution { model constant; coefficient 0.8; } }\n");
+        const auto end = text.find("endTime         0.1;");
+        ASSERT_NE(end, std::string::npos);
+        text.replace(end, 20, "endTime         0.015;");
+    }
+    if (physics == ExtraPhysics::electromagnetic) {
+        insertAfter(text, "buoyancy    on;",
+                    " electromagnetic { model lorentz; E (0 -2e5 0); B (0 0 0.1);"
+                    " charge { model surface; value 2e-5; } }");
         const auto end = text.find("endTime         0.1;");
         ASSERT_NE(end, std::string::npos);
         text.replace(end, 20, "endTime         0.015;");
@@ -200,7 +209,8 @@ std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
                              "WithFiniteReynoldsHistory",
                              "WithDispersionAndHeat",
                              "WithCollisionsAndDeposit",
-                             "WithSoftSpheres"};
+                             "WithSoftSpheres",
+                             "WithElectromagneticForces"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
@@ -214,7 +224,8 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                                          KillMoment{100, ExtraPhysics::finiteReynolds},
                                          KillMoment{100, ExtraPhysics::dispersionAndHeat},
                                          KillMoment{100, ExtraPhysics::collisionsAndDeposit},
-                                         KillMoment{100, ExtraPhysics::softSpheres}),
+                                         KillMoment{100, ExtraPhysics::softSpheres},
+                                         KillMoment{100, ExtraPhysics::electromagnetic}),
                          killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.

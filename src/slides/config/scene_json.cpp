@@ -138,6 +138,13 @@ nlohmann::json sceneSettings(const Scene& scene) {
           {"fluidSpecificHeat", scene.fluid.specificHeat},
           {"particleSpecificHeat", scene.particles.specificHeat},
           {"injectionTemperature", scene.particles.injectionTemperature}}}};
+    const ElectromagneticSettings& charged = scene.physics.electromagnetic;
+    settings["physics"]["electromagnetic"] = {
+        {"model", nameOf(electromagneticModelNames(), charged.model)},
+        {"E", vec(charged.electricField)},
+        {"B", vec(charged.magneticField)},
+        {"charge",
+         {{"model", nameOf(chargeModelNames(), charged.charge)}, {"value", charged.chargeValue}}}};
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},

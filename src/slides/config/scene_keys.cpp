@@ -9,6 +9,7 @@
 #include "slides/physics/adhesion.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/electromagnetic.h"
 #include "slides/physics/heat_transfer.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
@@ -360,6 +361,24 @@ std::vector<KeyDeclaration> declareKeys() {
          namesOrAuto(heatTransferModelNames()), R::any,
          "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28); auto: "
          "ranzMarshall where the scene analysis finds it matters."},
+        {"physics.electromagnetic", K::dictionary, "-", "-", {}, R::any,
+         "Forces on charged particles in applied fields (Section 2.7, physics/electromagnetic.h)."},
+        {"physics.electromagnetic.model", K::word, "-", "none",
+         namesOf(electromagneticModelNames()), R::any,
+         "lorentz: q (E + v × B) of Eq. 2.93 in uniform fields, with the drag by the exact "
+         "Lorentz–drag flow (integrate/lorentz_flow.h); not with the unsteady forces."},
+        {"physics.electromagnetic.E", K::vector, "V/m", "(0 0 0)", {}, R::any,
+         "Uniform electric field E of Eq. 2.93."},
+        {"physics.electromagnetic.B", K::vector, "T", "(0 0 0)", {}, R::any,
+         "Uniform magnetic field B of Eq. 2.93."},
+        {"physics.electromagnetic.charge", K::dictionary, "-", "-", {}, R::any,
+         "Charge of each particle, a lumped charge at its centre (Section 2.7.1)."},
+        {"physics.electromagnetic.charge.model", K::word, "-", "fixed",
+         namesOf(chargeModelNames()), R::any,
+         "fixed: q = value [C] for every particle; surface: q = value·4πR² (value a surface "
+         "charge density [C/m²])."},
+        {"physics.electromagnetic.charge.value", K::scalar, "C or C/m^2", "0", {}, R::any,
+         "The charge (fixed) or surface charge density (surface)."},
 
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "-", {}, R::positive,

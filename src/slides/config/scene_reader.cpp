@@ -604,6 +604,29 @@ void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
     if (!spin && !lift && !physics.spinHistory) automatic.push_back({PhysicsTerm::spin, ""});
 }
 
+/// physics.electromagnetic; its exact flow replaces the Maxey–Riley step's, so the unsteady
+/// forces stay off (an `auto` one among them is left unavailable).
+void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
+    ElectromagneticSettings& fields = physics.electromagnetic;
+    const std::string base = "physics.electromagnetic.";
+    fields.model = *valueNamed(electromagneticModelNames(), keys.word(base + "model"));
+    fields.electricField = keys.vector(base + "E");
+    fields.magneticField = keys.vector(base + "B");
+    fields.charge = *valueNamed(chargeModelNames(), keys.word(base + "charge.model"));
+    fields.chargeValue = keys.scalar(base + "charge.value");
+    if (!fields.on()) return;
+    if (physics.unsteadyForces())
+        keys.fail(base + "model", "the Lorentz step does not take the unsteady forces (history, "
+                                  "added mass, pressure gradient, lift, spin): set them off");
+    constexpr std::array unsteady{PhysicsTerm::history,          PhysicsTerm::addedMass,
+                                  PhysicsTerm::pressureGradient, PhysicsTerm::shearLift,
+                                  PhysicsTerm::spinLift,         PhysicsTerm::spin};
+    for (AutomaticTerm& automatic : physics.automaticTerms)
+        if (automatic.unavailable.empty() &&
+            std::find(unsteady.begin(), unsteady.end(), automatic.term) != unsteady.end())
+            automatic.unavailable = "not with physics.electromagnetic";
+}
+
 /// physics.dispersion and physics.heatTransfer with what they need from the other sections.
 void readDispersionAndHeat(const KeyReader& keys, Scene& scene) {
     PhysicsSettings& physics = scene.physics;
@@ -919,6 +942,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.autoThreshold = keys.scalar("physics.autoThreshold");
     readUnsteadyForces(keys, scene);
     readDispersionAndHeat(keys, scene);
+    readElectromagnetic(keys, scene.physics);
 
     if (scene.carrier.type == CarrierType::none)
         keys.require("time.dt", "for carrier type none (no gas for the scene analysis)");
@@ -927,6 +951,10 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
     scene.time.stopWhenAllDone = keys.boolean("time.stopWhenAllDone");
     scene.time.integrator = *valueNamed(integratorNames(), keys.word("time.integrator"));
+    if (scene.physics.electromagnetic.on() &&
+        scene.time.integrator != Integrator::exponentialMidpoint)
+        keys.fail("time.integrator", "the Lorentz step (physics.electromagnetic) is an "
+                                     "exponential midpoint rule: set exponentialMidpoint");
 
     const Dictionary& surfaces = dictionary.subDict("surfaces");
     for (const auto& name : surfaces.keys()) {

@@ -43,6 +43,7 @@ struct ParticleCloud {
     /// Soft-sphere contact load at the end of the last step (collide/soft_sphere_collisions.h).
     std::vector<Vec3> contactForce;  ///< [N]
     std::vector<Vec3> contactTorque; ///< [N m]
+    std::vector<double> charge;      ///< q [C], electromagnetic forces (physics/electromagnetic.h)
 
     std::size_t size() const { return id.size(); }
     bool empty() const { return id.empty(); }
@@ -68,6 +69,7 @@ struct ParticleCloud {
         visit("angularVelocity", cloud.angularVelocity);
         visit("contactForce", cloud.contactForce);
         visit("contactTorque", cloud.contactTorque);
+        visit("charge", cloud.charge);
     }
 };
 

@@ -227,6 +227,8 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
     ParticleCloud::forEachArray(state.cloud, [&](const char* name, auto& array) {
+        // A checkpoint from before the charge array holds uncharged particles.
+        if (std::string_view(name) == "charge" && !file.exists(g + "/cloud/charge")) return;
         readColumn(file, g + "/cloud/" + name, array);
         if (!array.empty() && array.size() != count)
             refuse(file.path(), std::string("damaged: cloud array ") + name + " has " +

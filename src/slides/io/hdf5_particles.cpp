@@ -59,6 +59,7 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
         file.writeDataset(g, "temperature", *frame.temperature, 1, "K");
     if (frame.angularVelocity && has(ParticleField::angularVelocity))
         file.writeDataset(g, "angularVelocity", *frame.angularVelocity, "rad/s");
+    if (frame.charge) file.writeDataset(g, "charge", *frame.charge, 1, "C");
     if (frame.injector) file.writeDataset(g, "injector", *frame.injector, "1");
     file.flush();
     frames_.push_back({group, time, count,

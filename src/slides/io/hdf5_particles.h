@@ -15,6 +15,7 @@
 //       state      int32 (N)       0 moving, 1 arrived (frozen where it touched)
 //       temperature float64 (N)    [K], with heat transfer
 //       angularVelocity float64 (N, 3) [rad/s], where the particles spin (scene.h tracksSpin)
+//       charge     float64 (N)    [C], with electromagnetic forces (physics/electromagnetic.h)
 //       injector   int32 (N)       index of the injector in `injectors {}`, with several
 //   /arrivals            written when the run ends, one row per particle that reached a
 //                        surface: id, surface (index into the case's surfaces), time [s],

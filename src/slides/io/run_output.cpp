@@ -60,7 +60,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
       carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
       fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin),
-      injectorFirstIds_(settings.injectorFirstIds) {
+      electromagnetic_(settings.electromagnetic), injectorFirstIds_(settings.injectorFirstIds) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -80,7 +80,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
                                  "holds " + std::to_string(stored.id.size()) +
                                      " particles, the checkpoint counts " +
                                      std::to_string(frames_[n].count) + "; cannot restart");
-            ParticleFrame frame = stored.view(fields_, heating_, spinning_);
+            ParticleFrame frame = stored.view(fields_, heating_, spinning_, electromagnetic_.on());
             attachInjectors(frame);
             hdf5_->writeFrame(frames_[n].time, frame);
         }
@@ -100,6 +100,7 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
     states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
     temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
     spins_.assign(cloud.angularVelocity.begin(), cloud.angularVelocity.end());
+    charges_.assign(cloud.charge.begin(), cloud.charge.end());
     for (const auto& arrival : snapshot.arrivals) {
         ids_.push_back(arrival.id);
         positions_.push_back(arrival.position);
@@ -108,11 +109,13 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
         states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
         temperatures_.push_back(arrival.temperature);
         spins_.push_back(arrival.angularVelocity);
+        if (electromagnetic_.on()) charges_.push_back(electromagnetic_.chargeOf(arrival.radius));
     }
     const std::string name = frameFileName(frames_.size());
     ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
     if (heating_) frame.temperature = temperatures_;
     if (spinning_) frame.angularVelocity = spins_;
+    if (electromagnetic_.on()) frame.charge = charges_;
     attachInjectors(frame);
     writeParticlesVtp(directory_ / name, frame);
     const double time = snapshot.counters.time;

@@ -19,6 +19,7 @@
 #include "slides/io/output_settings.h"
 #include "slides/io/pvd_series.h"
 #include "slides/io/run_snapshot.h"
+#include "slides/physics/electromagnetic.h"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -32,6 +33,8 @@ struct RunOutputSettings {
     std::filesystem::path caseDirectory; ///< named in particles.h5
     bool temperature = false;            ///< particles carry a temperature (heat transfer)
     bool spin = false;                   ///< particles carry a spin ω
+    /// The particles' charges (physics/electromagnetic.h): an arrival's is its radius's.
+    ElectromagneticSettings electromagnetic;
     /// The first particle id of each injector of `injectors {}`; empty: no injector array.
     std::vector<std::uint64_t> injectorFirstIds;
 };
@@ -77,6 +80,8 @@ private:
     bool spinning_;                    ///< particles carry a spin ω
     std::vector<double> temperatures_; ///< [K], with heat transfer
     std::vector<Vec3> spins_;          ///< ω [rad/s], with spin
+    ElectromagneticSettings electromagnetic_;
+    std::vector<double> charges_; ///< q [C], with electromagnetic forces
     std::vector<std::uint64_t> injectorFirstIds_;
     std::vector<std::int32_t> injectors_; ///< each particle's injector, with several
 };

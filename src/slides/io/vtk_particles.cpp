@@ -88,6 +88,12 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
             spin->SetTypedTuple(i, (*frame.angularVelocity)[static_cast<std::size_t>(i)].data());
         add(ParticleField::angularVelocity, spin);
     }
+    if (frame.charge) {
+        auto charge = namedDoubleArray("charge", 1, count);
+        for (vtkIdType i = 0; i < count; ++i)
+            charge->SetValue(i, (*frame.charge)[static_cast<std::size_t>(i)]);
+        data->AddArray(charge);
+    }
     if (frame.injector) {
         vtkNew<vtkTypeInt32Array> injector;
         injector->SetName("injector");
@@ -104,11 +110,12 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
     writeVtkAtomically(file, writer);
 }
 
-ParticleFrame StoredParticleFrame::view(ParticleFieldSet fields, bool heating,
-                                        bool spinning) const {
+ParticleFrame StoredParticleFrame::view(ParticleFieldSet fields, bool heating, bool spinning,
+                                        bool charged) const {
     ParticleFrame frame{id, position, velocity, radius, state, fields};
     if (heating) frame.temperature = temperature;
     if (spinning) frame.angularVelocity = angularVelocity;
+    if (charged) frame.charge = charge;
     return frame;
 }
 
@@ -175,6 +182,7 @@ StoredParticleFrame readParticlesVtp(const std::filesystem::path& file) {
     frame.state = pointArray<std::int32_t>(data, "state", 1, count, 0, file);
     frame.temperature = pointArray<double>(data, "temperature", 1, count, 0.0, file);
     frame.angularVelocity = pointArray<Vec3>(data, "angularVelocity", 3, count, Vec3::Zero(), file);
+    frame.charge = pointArray<double>(data, "charge", 1, count, 0.0, file);
     return frame;
 }
 

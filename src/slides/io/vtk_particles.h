@@ -32,6 +32,7 @@ struct ParticleFrame {
     ParticleFieldSet fields = ParticleFieldSet::all(); ///< which point arrays to write
     std::optional<std::span<const double>> temperature = std::nullopt;   ///< [K]; none: no heating
     std::optional<std::span<const Vec3>> angularVelocity = std::nullopt; ///< [rad/s]; none: no ω
+    std::optional<std::span<const double>> charge = std::nullopt;        ///< q [C]; none: uncharged
     /// Index of the injector each particle came from; none: one injector.
     std::optional<std::span<const std::int32_t>> injector = std::nullopt;
 
@@ -41,7 +42,7 @@ struct ParticleFrame {
         return position.size() == count && velocity.size() == count && radius.size() == count &&
                state.size() == count && (!temperature || temperature->size() == count) &&
                (!angularVelocity || angularVelocity->size() == count) &&
-               (!injector || injector->size() == count);
+               (!charge || charge->size() == count) && (!injector || injector->size() == count);
     }
 };
 
@@ -60,9 +61,11 @@ struct StoredParticleFrame {
     std::vector<std::int32_t> state;
     std::vector<double> temperature;
     std::vector<Vec3> angularVelocity;
+    std::vector<double> charge;
 
-    /// The frame to write again: temperature with heating, ω with spinning.
-    ParticleFrame view(ParticleFieldSet fields, bool heating, bool spinning) const;
+    /// The frame to write again: temperature with heating, ω with spinning, q when charged.
+    ParticleFrame view(ParticleFieldSet fields, bool heating, bool spinning,
+                       bool charged = false) const;
 };
 
 /// Reads a frame that writeParticlesVtp wrote. Throws InputError naming the file when it cannot

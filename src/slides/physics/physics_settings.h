@@ -12,6 +12,7 @@
 #include "slides/core/vector.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/electromagnetic.h"
 #include "slides/physics/heat_transfer.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/lift.h"
@@ -36,6 +37,7 @@ struct PhysicsSettings {
     DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
     DispersionConstants dispersionConstants;
     HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
+    ElectromagneticSettings electromagnetic;                  ///< physics/electromagnetic.h
     /// Terms left to the scene analysis (`auto`), off until it turns them on.
     std::vector<AutomaticTerm> automaticTerms;
     /// Largest estimated effect of a term that auto turns off (analysis/scene_analysis.h).

@@ -35,6 +35,7 @@ RunOutputSettings runOutputSettings(const Scene& scene) {
             .caseDirectory = scene.caseDirectory,
             .temperature = scene.physics.heatTransfer != HeatTransferModel::none,
             .spin = tracksSpin(scene),
+            .electromagnetic = scene.physics.electromagnetic,
             .injectorFirstIds = injectorFirstIds(scene)};
 }
 

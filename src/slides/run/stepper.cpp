@@ -35,6 +35,12 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
                             carrier.steady());
         cloud_.stateWidth = maxeyRiley_->stateWidth();
     }
+    if (scene.physics.electromagnetic.on()) {
+        if (maxeyRiley_)
+            throw std::logic_error("electromagnetic forces with unsteady forces: refused when "
+                                   "the scene is read (config/scene_reader.cpp)");
+        chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
+    }
     if (scene.collisions.model == CollisionModel::impulse)
         collisions_.emplace(scene.collisions, scene.particles);
     if (scene.collisions.model == CollisionModel::softSphere)
@@ -152,6 +158,7 @@ void Stepper::inject(double h) {
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     if (heating_.on())
         cloud_.temperature.resize(cloud_.size(), scene_.particles.injectionTemperature);
+    if (chargedMotion_) chargedMotion_->charge(cloud_, alreadyInFlight);
     injectors_.setStartStates(cloud_, alreadyInFlight);
     particleSteps_ += cloud_.size();
 }
@@ -242,6 +249,15 @@ void Stepper::advance(double h) {
         };
         return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
     }
+    if (chargedMotion_) {
+        midpointLocations_ = cloud_.carrierLocation;
+        const auto sampleMidpoint = [&](const std::vector<Vec3>& points, CarrierSample& out) {
+            sampleCarrier(points, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, out);
+            dispersion_.addTo(out.velocity, 0);
+            if (plane_) plane_->project(out.velocity);
+        };
+        return chargedMotion_->advance(cloud_, gas_, sampleMidpoint, stepLengths_);
+    }
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
 
@@ -257,7 +273,7 @@ void Stepper::advance(double h) {
 }
 
 bool Stepper::samplesGasForAll() const {
-    return maxeyRiley_ || dispersion_.on() || heating_.on() ||
+    return maxeyRiley_ || chargedMotion_ || dispersion_.on() || heating_.on() ||
            scene_.time.integrator != Integrator::exponentialMidpoint;
 }
 
@@ -307,6 +323,7 @@ void Stepper::advanceByMidpointRule(double h) {
 }
 
 void Stepper::flyBallistically(double) {
+    if (chargedMotion_) return chargedMotion_->fly(cloud_, stepLengths_);
     const Vec3& a = bodyAcceleration_;
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)

@@ -47,6 +47,7 @@
 #include "slides/collide/soft_sphere_collisions.h"
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/charged_motion.h"
 #include "slides/integrate/injector_set.h"
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
@@ -170,6 +171,7 @@ private:
     std::vector<std::uint64_t> escapedThrough_;
     std::uint64_t particleSteps_ = 0;
     std::optional<MaxeyRileyStepper> maxeyRiley_;     ///< when an unsteady term is on
+    std::optional<ChargedMotion> chargedMotion_;      ///< with electromagnetic forces
     std::optional<ParticleCollisions> collisions_;    ///< when collisions.model is impulse
     std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
     std::optional<PlaneConstraint> plane_;            ///< when the carrier is 2-D

@@ -1,0 +1,85 @@
+// Electromagnetic forces on charged particles: the Lorentz force F = q (E + v × B) (Eq. 2.93)
+// in uniform applied fields, the particle a lumped charge at its centre (Section 2.7.1).
+//
+// Reference: Section 2.7.1, Eq. 2.93. A particle's charge is fixed (the same q for every
+// particle) or proportional to its surface, q = σ 4πR² (a surface charge density σ, as
+// triboelectric and corona charging give). Per unit mass the force is g_E + v × Ω with
+// g_E = qE/m and the signed gyration vector Ω = qB/m (|Ω| the cyclotron frequency, Larmor radius
+// |v⊥|/|Ω|); integrate/lorentz_flow.h integrates it exactly together with the drag.
+//
+//     physics { electromagnetic { model lorentz;            // none | lorentz
+//                                 E (0 0 1e5);               // V/m
+//                                 B (0 0 0.5);               // T
+//                                 charge { model surface; value 1e-5; } } }  // fixed: C; surface:
+//                                 C/m²
+//
+// How to add a charge model: an enumerator, its name in chargeModelNames() and its case in
+// ElectromagneticSettings::chargeOf().
+#pragma once
+
+#include "slides/core/vector.h"
+
+#include <array>
+#include <numbers>
+#include <string_view>
+
+namespace slides {
+
+enum class ElectromagneticModel { none, lorentz };
+
+struct ElectromagneticModelName {
+    ElectromagneticModel value;
+    std::string_view name;
+};
+
+/// The name table of the electromagnetic family, as written in the dictionary.
+constexpr std::array<ElectromagneticModelName, 2> electromagneticModelNames() {
+    return {{{ElectromagneticModel::none, "none"}, {ElectromagneticModel::lorentz, "lorentz"}}};
+}
+
+enum class ChargeModel { fixed, surface };
+
+struct ChargeModelName {
+    ChargeModel value;
+    std::string_view name;
+};
+
+/// The name table of the particle charge: fixed q [C], or surface density σ [C/m²].
+constexpr std::array<ChargeModelName, 2> chargeModelNames() {
+    return {{{ChargeModel::fixed, "fixed"}, {ChargeModel::surface, "surface"}}};
+}
+
+struct ElectromagneticSettings {
+    ElectromagneticModel model = ElectromagneticModel::none;
+    Vec3 electricField = Vec3::Zero(); ///< E [V/m]
+    Vec3 magneticField = Vec3::Zero(); ///< B [T]
+    ChargeModel charge = ChargeModel::fixed;
+    double chargeValue = 0; ///< q [C] (fixed) or σ [C/m²] (surface)
+
+    bool on() const { return model != ElectromagneticModel::none; }
+
+    /// The charge of a particle of the given radius [C].
+    double chargeOf(double radius) const {
+        switch (charge) {
+        case ChargeModel::fixed: return chargeValue;
+        case ChargeModel::surface: return chargeValue * 4 * std::numbers::pi * radius * radius;
+        }
+        return chargeValue;
+    }
+};
+
+/// The Lorentz force of Eq. 2.93 per unit mass, split as the flow takes it: the electric
+/// acceleration qE/m and the gyration vector Ω = qB/m (dv/dt = qE/m + v × Ω).
+struct LorentzRates {
+    Vec3 electricAcceleration; ///< qE/m [m/s²]
+    Vec3 gyration;             ///< Ω = qB/m [rad/s]
+};
+
+/// The Lorentz rates of a particle of charge q [C] and mass m [kg] in the fields of settings.
+inline LorentzRates lorentzRates(const ElectromagneticSettings& settings, double charge,
+                                 double mass) {
+    const double chargeToMass = charge / mass;
+    return {chargeToMass * settings.electricField, chargeToMass * settings.magneticField};
+}
+
+} // namespace slides
