@@ -6,8 +6,8 @@
 //    µ⁺ = µ(1 − p)(9κ + 8µ)/(9κ + 8µ + 6p(κ + 2µ)) (Torquato, Random Heterogeneous Materials
 //    (2002) Eq. 21.24–21.25), and the lower bounds vanish;
 //  - Eq. 5.3: porosity 0 gives the matrix; the estimate falls with porosity, lies between the
-//    bounds, and changes by less than 0.2 % when C goes from 1e-4 to 1e-6 (the reference's remark:
-//    the lower bound, O(C) of the matrix, is all that moves);
+//    bounds, and changes by less than 0.5 % when C goes from 1e-4 to 1e-6 (the reference's remark:
+//    the lower bound, O(C/p) of the matrix, is all that moves);
 //  - Eq. 5.4–5.5: R_ν = 1 under uniaxial stress (σ_eq = σ), σ_eq = σ_vm √(2(1 + ν)/3) in shear,
 //    and σ_eq²/(2E) equals the elastic strain energy density ½ σ:ε of any stress;
 //  - Eq. 5.6: Σ = 0 up to the threshold, (σ_eq − σ₀)/σ₀ beyond.
@@ -73,8 +73,8 @@ TEST(PorousModuli, ConvexCombinationFallsWithPorosityAndIsInsensitiveToThePoreSt
         EXPECT_LT(m.bulk, b.upper);
         EXPECT_DOUBLE_EQ(porousModuli(matrix, p, 1.0).bulk, b.upper);
         const IsotropicModuli stiffer = porousModuli(matrix, p, 0.5, 1e-6);
-        EXPECT_NEAR(stiffer.bulk / m.bulk, 1.0, 2e-3);
-        EXPECT_NEAR(stiffer.shear / m.shear, 1.0, 2e-3);
+        EXPECT_NEAR(stiffer.bulk / m.bulk, 1.0, 5e-3);
+        EXPECT_NEAR(stiffer.shear / m.shear, 1.0, 5e-3);
         previous = m.bulk;
     }
 }
