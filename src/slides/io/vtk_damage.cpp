@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numeric>
 
 namespace slides {
 
@@ -97,6 +98,8 @@ nlohmann::json DamageOutput::finish(const std::vector<std::optional<ErosionGrid>
                 depth[k] = static_cast<double>(k) * grid.spacing().z();
             summary[names_[s]] = {{"impacts", grid.impacts()},
                                   {"damagedVolume", grid.damagedVolume()},
+                                  {"accumulatedDamage",
+                                   std::accumulate(damage.begin(), damage.end(), std::uint64_t{0})},
                                   {"layerYoungsModulus", grid.layer().youngsModulus},
                                   {"layerPoissonRatio", grid.layer().poissonRatio},
                                   {"centreLineDepth", depth},

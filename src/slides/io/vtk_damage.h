@@ -6,7 +6,8 @@
 //                          (the largest σ_eq so far, Eq. 5.5) [Pa], for ParaView
 //   damage.h5              at the end: /<surface>/damage, peakSigmaEq (x fastest, then y,
 //                          then depth), centreLineTime [s], centreLineSigmaEq (impact × depth)
-// and the summary's `erosion` section: impacts, damaged volume, the peak σ_eq across the
+// and the summary's `erosion` section: impacts, damaged volume, accumulated damage (the counts'
+// sum over the grid points), the peak σ_eq across the
 // thickness on the centre line (Fig. 5.6's points).
 #pragma once
 
