@@ -9,6 +9,7 @@
 //         softSphereCoeffs { damping restitution; neighbourSkin 0.2; contactLaw hertz; }
 //     }
 //     surfaces { target { type plane; ... interaction deposit; } }   // absorb | rebound | deposit
+//                                                                    // | erode
 //
 // How to add a model: an enumerator, its name in the table, and the stage of the stepper that
 // resolves its contacts (run/stepper.cpp: ParticleCollisions for impulses,
@@ -65,7 +66,8 @@ struct SoftSphereSettings {
 enum class SurfaceInteraction {
     absorb,  ///< records the arrival and removes the particle (a sink, as OpenFOAM's stick)
     rebound, ///< impulse law with restitution and friction (Eq. 2.15–2.33)
-    deposit  ///< sticks when Eq. 5.9 holds, else rebounds; the deposit then collides too
+    deposit, ///< sticks when Eq. 5.9 holds, else rebounds; the deposit then collides too
+    erode    ///< rebounds, and loads a porous layer's damage grid (Section 5.2)
 };
 
 struct SurfaceInteractionName {
@@ -73,10 +75,11 @@ struct SurfaceInteractionName {
     std::string_view name;
 };
 
-constexpr std::array<SurfaceInteractionName, 3> surfaceInteractionNames() {
+constexpr std::array<SurfaceInteractionName, 4> surfaceInteractionNames() {
     return {{{SurfaceInteraction::absorb, "absorb"},
              {SurfaceInteraction::rebound, "rebound"},
-             {SurfaceInteraction::deposit, "deposit"}}};
+             {SurfaceInteraction::deposit, "deposit"},
+             {SurfaceInteraction::erode, "erode"}}};
 }
 
 /// Contact laws of every impulse contact: between particles, with surfaces and the deposit.

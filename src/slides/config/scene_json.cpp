@@ -170,6 +170,14 @@ nlohmann::json sceneSettings(const Scene& scene) {
             {"normal", vec(plane.normal)},
             {"interaction", nameOf(surfaceInteractionNames(), plane.interaction)},
             {"material", material(plane.material)}};
+    for (const auto& plane : scene.surfaces) {
+        if (plane.interaction != SurfaceInteraction::erode) continue;
+        const ErosionSettings& layer = plane.erosion;
+        settings["surfaces"][plane.name]["erosion"] = {
+            {"thickness", layer.thickness}, {"width", layer.width},
+            {"porosity", layer.porosity},   {"boundWeight", layer.boundWeight},
+            {"threshold", layer.threshold}, {"cells", layer.cells}};
+    }
     settings["domain"] = {{"min", vec(scene.domain.min)}, {"max", vec(scene.domain.max)}};
     std::vector<std::string_view> fields;
     for (const auto& field : particleFieldNames())

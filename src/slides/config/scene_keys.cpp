@@ -480,7 +480,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"surfaces.*.interaction", K::word, "-", "absorb", namesOf(surfaceInteractionNames()),
          R::any,
          "absorb: record the arrival and remove the particle; rebound: impulse law (Eq. "
-         "2.15–2.33); deposit: stick where Eq. 5.9 holds, else rebound."},
+         "2.15–2.33); deposit: stick where Eq. 5.9 holds, else rebound; erode: rebound, loading "
+         "the porous layer of `erosion` (Section 5.2)."},
         {"surfaces.*.material", K::dictionary, "-", "-", {}, R::any,
          "Surface properties (Table 5.2), for rebound and deposition."},
         {"surfaces.*.material.bulkModulus", K::scalar, "Pa", "-", {}, R::positive,
@@ -491,6 +492,22 @@ std::vector<KeyDeclaration> declareKeys() {
          "Yield stress."},
         {"surfaces.*.material.surfaceEnergy", K::scalar, "J/m^2", "-", {}, R::positive,
          "Surface energy γ."},
+        {"surfaces.*.erosion", K::dictionary, "-", "-", {}, R::any,
+         "The porous layer of an erode surface (Fig. 5.1): the plane's material is its matrix."},
+        {"surfaces.*.erosion.thickness", K::scalar, "m", "-", {}, R::positive,
+         "Layer thickness d (Fig. 5.1)."},
+        {"surfaces.*.erosion.width", K::scalar, "m", "-", {}, R::positive,
+         "Layer width w, a square centred on the plane's point (Fig. 5.1)."},
+        {"surfaces.*.erosion.porosity", K::scalar, "-", "0", {}, R::nonNegative,
+         "Pore volume fraction p (Eq. 5.1–5.3, v2 = 1 − p); the pores are a phase C = 1e-4 as "
+         "stiff.", noMinimum, 0.95},
+        {"surfaces.*.erosion.boundWeight", K::scalar, "-", "0.5", {}, R::nonNegative,
+         "φ of Eq. 5.3: the moduli φ·upper + (1 − φ)·lower Hashin–Shtrikman bound.", noMinimum,
+         1},
+        {"surfaces.*.erosion.threshold", K::scalar, "Pa", "-", {}, R::positive,
+         "Damage threshold σ0 of the matrix (Eq. 5.5–5.6)."},
+        {"surfaces.*.erosion.cells", K::integerTriple, "-", "(32 32 8)", {}, R::atLeastOne,
+         "Grid cells across the width (two directions, even) and the thickness."},
 
         {"domain", K::dictionary, "-", "-", {}, R::any,
          "Particles leaving this box escape; required for an analytic carrier, the mesh's box "

@@ -553,6 +553,30 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
     return material;
 }
 
+/// The porous layer of an erode surface (Section 5.2): a plane whose material gives the moduli.
+ErosionSettings readErosion(const KeyReader& keys, const std::string& base,
+                            const Surface& surface) {
+    const std::string layer = base + ".erosion";
+    if (!surface.patch.empty()) keys.fail(base + ".interaction", "erode needs a plane surface");
+    keys.require(layer, "by interaction erode");
+    keys.require(base + ".material.bulkModulus", "by interaction erode (the layer's matrix)");
+    keys.require(base + ".material.shearModulus", "by interaction erode (the layer's matrix)");
+    keys.require(layer + ".thickness", "by interaction erode");
+    keys.require(layer + ".width", "by interaction erode");
+    keys.require(layer + ".threshold", "by interaction erode (σ0 of Eq. 5.6)");
+    ErosionSettings erosion;
+    erosion.thickness = keys.scalar(layer + ".thickness");
+    erosion.width = keys.scalar(layer + ".width");
+    erosion.porosity = keys.scalar(layer + ".porosity");
+    erosion.boundWeight = keys.scalar(layer + ".boundWeight");
+    erosion.threshold = keys.scalar(layer + ".threshold");
+    erosion.cells = keys.integerTriple(layer + ".cells");
+    if (erosion.cells[0] % 2 != 0 || erosion.cells[1] % 2 != 0)
+        keys.fail(layer + ".cells", "the cells across the width must be even (a grid line on "
+                                    "the layer's centre, where the stress history is taken)");
+    return erosion;
+}
+
 std::optional<JetTurbulence> readJetTurbulence(const KeyReader& keys) {
     const std::string base = "carrier.turbulence.";
     if (!keys.has("carrier.turbulence")) return std::nullopt;
@@ -972,6 +996,8 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         surface.material = readMaterial(keys, base + ".material");
         surface.interaction =
             *valueNamed(surfaceInteractionNames(), keys.word(base + ".interaction"));
+        if (surface.interaction == SurfaceInteraction::erode)
+            surface.erosion = readErosion(keys, base, surface);
         scene.surfaces.push_back(surface);
     }
     readCollisionsAndDeposition(keys, scene);

@@ -3,6 +3,7 @@
 #include "slides/io/progress.h"
 #include "slides/io/run_output.h"
 #include "slides/io/vtk_carrier_grid.h"
+#include "slides/io/vtk_damage.h"
 #include "slides/io/vtk_deposit.h"
 #include "slides/run/rank_agreement.h"
 #include "slides/run/rank_gather.h"
@@ -121,7 +122,12 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     ProgressDisplay progress(stderr, quiet);
     // Every rank's part of the state, on the rank that writes.
     const std::size_t exits = carrier.boundaryNames().size() + 1;
+    // The damage grids of eroding surfaces (Section 5.2), on a single rank.
+    std::optional<DamageOutput> damage;
+    if (writes && !ranks.parallel()) damage.emplace(outputDirectory, scene.surfaces);
     const auto writeFrame = [&] {
+        if (damage && damage->any())
+            damage->writeFrame(stepper.time(), stepper.surfaceImpacts().erosion());
         if (!ranks.parallel()) return output->writeFrame(stepper.snapshot());
         const GatheredRun run = gatherRun(stepper.snapshot(), ranks, exits, scene.surfaces.size());
         if (writes) output->writeFrame(run.snapshot());
@@ -169,7 +175,9 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
                              carrier.describe(), carrier.boundaryNames(), carrier.figures()};
     if (!ranks.parallel()) {
         const RunSnapshot snapshot = stepper.snapshot();
-        const auto summary = runSummary(resolved, snapshot, metrics);
+        auto summary = runSummary(resolved, snapshot, metrics);
+        if (damage && damage->any())
+            summary["erosion"] = damage->finish(stepper.surfaceImpacts().erosion());
         writeDeposit(output->directory(), scene.surfaces, snapshot.arrivals);
         output->finish(snapshot, summary);
         if (!options.quiet) reportRunEnd(snapshot, summary, *output, metrics);

@@ -25,6 +25,11 @@ SurfaceImpacts::SurfaceImpacts(const std::vector<Surface>& surfaces,
                              ? std::nullopt
                              : std::optional<PatchWall>(carrier.patchTriangles(surface.patch)));
         if (!meetsBySoftContact(collisions, surface.interaction)) metAtTouch_.push_back(s);
+        erosion_.push_back(surface.interaction == SurfaceInteraction::erode
+                               ? std::optional<ErosionGrid>(std::in_place, surface.point,
+                                                            surface.normal, surface.material,
+                                                            surface.erosion)
+                               : std::nullopt);
     }
 }
 
@@ -86,6 +91,23 @@ std::optional<PatchTouch> SurfaceImpacts::overlapWith(std::size_t s, const Vec3&
     if (height >= radius) return std::nullopt;
     return PatchTouch{0, plane.normal, plane.point};
 }
+
+namespace {
+
+/// Loads the layer with an impact at contact: the surface takes −J, pressed along −n̂ and
+/// pulled along the tangential part of −J.
+void erode(ErosionGrid& layer, double time, const Vec3& contact, const Vec3& normal,
+           const Vec3& impulse, double radius, double mass, const MaterialSettings& particle,
+           double normalSpeed) {
+    const double normalImpulse = impulse.dot(normal);
+    const Vec3 tangential = impulse - normalImpulse * normal;
+    const double ratio = tangential.norm() / normalImpulse;
+    const Vec3 tangent = ratio > 1e-12 ? Vec3(-tangential.normalized()) : Vec3(layer.axes().col(0));
+    layer.applyImpact(time, contact, tangent,
+                      layer.impactLoad(radius, mass, particle, normalSpeed, ratio));
+}
+
+} // namespace
 
 ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path& path,
                                        double stepEnd, Arrival& arrival) {
@@ -202,6 +224,10 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (heats())
         cloud.temperature[i] += collisionalTemperatureRise(energyBefore - kineticEnergy(body),
                                                            particles_.specificHeat, mass);
+    if (erosion_[static_cast<std::size_t>(surface)] && !onDeposit)
+        erode(*erosion_[static_cast<std::size_t>(surface)], stepEnd - (1 - fraction) * path.length,
+              centre - radius * normal, normal, impulse, radius, mass, particleMaterial,
+              normalSpeed);
     const Vec3 change = body.velocity - contactVelocity;
     const double remaining = (1 - fraction) * path.length;
     v += change;

@@ -9,6 +9,8 @@
 //   deposit — if v_n = −v_c·n̂ is below Eq. 5.9's limit for the pair (particle–surface, or
 //             particle–deposited particle), it sticks: recorded as an arrival, added to the
 //             deposit, and leaves; otherwise it rebounds;
+//   erode   — rebounds as below, and loads the damage grid of the surface's porous layer with
+//             the impact's Hertz loads (surfaces/erosion_grid.h, Section 5.2);
 //   rebound — (a soft wall under collisions.model softSphere: not met here, its contact forces
 //             act in collide/soft_sphere_collisions.h; otherwise)
 //             impulse J against a rigid body (collide/impulse.h, restitution from
@@ -32,6 +34,7 @@
 #include "slides/physics/heat_transfer.h"
 #include "slides/surfaces/arrival.h"
 #include "slides/surfaces/deposit.h"
+#include "slides/surfaces/erosion_grid.h"
 #include "slides/surfaces/patch_wall.h"
 #include "slides/surfaces/surface_settings.h"
 
@@ -83,6 +86,8 @@ public:
     void indexDeposit() { deposit_.index(); }
 
     const Deposit& deposit() const { return deposit_; }
+    /// Per surface: the damage grid of its porous layer, for the surfaces that erode.
+    const std::vector<std::optional<ErosionGrid>>& erosion() const { return erosion_; }
     /// Rebounds off each surface (and its deposit) so far.
     const std::vector<std::uint64_t>& rebounds() const { return rebounds_; }
     /// Adds rebounds off surface s met elsewhere (the soft walls of soft-sphere collisions).
@@ -123,6 +128,7 @@ private:
     std::vector<std::size_t> metAtTouch_; ///< the surfaces met here, at the touch: not soft walls
     Deposit deposit_;
     std::vector<std::uint64_t> rebounds_;
+    std::vector<std::optional<ErosionGrid>> erosion_;
 };
 
 } // namespace slides

@@ -9,6 +9,7 @@
 #include "slides/collide/collision_settings.h"
 #include "slides/core/vector.h"
 #include "slides/physics/contact_pair.h"
+#include "slides/surfaces/erosion_settings.h"
 
 #include <algorithm>
 #include <string>
@@ -24,7 +25,8 @@ struct Surface {
     Vec3 normal = Vec3::UnitX(); ///< unit, pointing into the gas side
     MaterialSettings material;
     SurfaceInteraction interaction = SurfaceInteraction::absorb;
-    std::string patch; ///< the mesh patch it is; empty for a plane
+    std::string patch;       ///< the mesh patch it is; empty for a plane
+    ErosionSettings erosion; ///< the layer, for interaction erode
 };
 
 /// Whether the particles carry a spin ω: the spin term (physics.spin), or contacts with friction
