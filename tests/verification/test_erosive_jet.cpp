@@ -9,7 +9,8 @@
 //  - less accumulated damage at 30° incidence than at normal incidence, at the same speed: the
 //    normal speed, which sets the Hertz load, falls by cos 30° (Fig. 5.6);
 //  - every impact is counted (the summary's impacts equal the layer's rebounds), and the run's
-//    damage.h5 and damage_layer.pvd exist.
+//    damage.h5 and damage_layer.pvd exist;
+//  - checkpoints do not hold the damage grid yet: asking for them is refused, nothing written.
 #include "../support/case_runs.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +70,20 @@ TEST(ErosiveJet, MoreDamageAtHigherPorosityLessAtObliqueIncidence) {
         EXPECT_LT(angled.accumulated, dense.accumulated) << "seed " << seed;
         EXPECT_LE(angled.volume, dense.volume) << "seed " << seed;
     }
+}
+
+TEST(ErosiveJet, CheckpointsAreRefusedUntilTheyHoldTheDamageGrid) {
+    const ScratchDirectory scratch("erosive-jet-checkpoint");
+    std::filesystem::copy(sourceDir / "foamCases/erosiveJet/constant/slidesProperties",
+                          scratch.path / "constant/slidesProperties");
+    EXPECT_EQ(
+        runCli(scratch.path.string() + " --quiet --checkpoint-every 10", scratch.path / "log"), 2);
+    EXPECT_NE(slurp(scratch.path / "log")
+                  .find("key '--checkpoint-every': checkpoints do not hold the damage grid of "
+                        "surface layer"),
+              std::string::npos)
+        << slurp(scratch.path / "log");
+    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"));
 }
 
 } // namespace

@@ -15,7 +15,7 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
         std::size_t index;
         MotionState state;
         double done, trial;
-        std::array<MotionState, 7> k;
+        std::array<MotionState, 7> k; ///< the stage slopes
         double step;
     };
     std::vector<Particle> active;
@@ -23,7 +23,9 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
         if (!(h[i] > 0)) continue;
         MotionState state;
         state << position[i], velocity[i];
-        active.push_back({i, state, 0.0, h[i], {}, 0.0});
+        Particle particle{i, state, 0.0, h[i], {}, 0.0};
+        particle.k.fill(MotionState::Zero());
+        active.push_back(particle);
     }
     std::vector<Vec3> points;
     std::vector<MotionState> stages;

@@ -37,15 +37,35 @@ void requireParallelSupport(const RunOptions& options, const Scene& scene) {
     const std::string dictionary = scene.dictionaryFile.string();
     if (scene.collisions.model != CollisionModel::none)
         refuse(dictionary, "collisions.model", "colliding particles (ghosts across ranks)");
-    for (const Surface& surface : scene.surfaces)
+    for (const Surface& surface : scene.surfaces) {
         if (surface.interaction == SurfaceInteraction::deposit)
             refuse(dictionary, "surfaces." + surface.name + ".interaction",
                    "a deposit (ghosts across ranks)");
+        if (surface.interaction == SurfaceInteraction::erode)
+            refuse(dictionary, "surfaces." + surface.name + ".interaction",
+                   "an eroding surface (its damage grid summed over ranks)");
+    }
+}
+
+/// A checkpoint does not hold an eroding surface's damage grid yet: a restart would go on with
+/// an empty one, so checkpointing such a run is refused (exit status 2).
+void requireCheckpointSupport(const RunOptions& options, const Scene& scene) {
+    if (options.checkpointEvery == 0 && !options.restart) return;
+    for (const Surface& surface : scene.surfaces)
+        if (surface.interaction == SurfaceInteraction::erode)
+            throw InputError("command line", 0,
+                             options.restart ? "--restart" : "--checkpoint-every",
+                             "checkpoints do not hold the damage grid of surface " + surface.name +
+                                 " (interaction erode) yet: run it whole");
 }
 
 /// The scene resolved on every rank; an input error is one every rank finds alike.
 ResolvedScene resolveOnEveryRank(const RunOptions& options, const RankCommunicator& ranks) {
-    if (!ranks.parallel()) return resolveScene(options.caseDirectory, options.overrides);
+    if (!ranks.parallel()) {
+        ResolvedScene resolved = resolveScene(options.caseDirectory, options.overrides);
+        requireCheckpointSupport(options, resolved.scene);
+        return resolved;
+    }
     try {
         ResolvedScene resolved = resolveScene(options.caseDirectory, options.overrides, ranks);
         requireParallelSupport(options, resolved.scene);
