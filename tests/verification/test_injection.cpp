@@ -306,7 +306,7 @@ TEST(SeveralInjectors, BadInjectorsAreRefusedAtTheirKey) {
               "injectors.a.coneCoeffs.outerHalfAngle: must be larger than innerHalfAngle");
     EXPECT_EQ(refusal("injectors { a { model sprinkler; } }"),
               "injectors.a.model: unknown model 'sprinkler'; valid model names are:\n    disc\n"
-              "    cone\n    file\n    ensemble");
+              "    cone\n    file\n    patch\n    ensemble");
     EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; } }\ninjection { rate 5; }"),
               "injection.rate: with injectors, injection gives only the seed");
     EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; radiusDistribution { type normal; "

@@ -261,8 +261,15 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
     if (file.exists(g + "/springs")) {
         SpringColumns& springs = state.springs;
         SpringColumns::forEach(springs, [&](const char* name, auto& array) {
+            // A checkpoint from before the column: no contact law that unloads from its largest
+            // overlap (waltonBraun) existed, so every δ_max is unused; 0.
+            if (std::string_view(name) == "largestOverlap" &&
+                !file.exists(g + "/springs/largestOverlap"))
+                return;
             readColumn(file, g + "/springs/" + name, array);
         });
+        if (!file.exists(g + "/springs/largestOverlap"))
+            springs.largestOverlap.assign(springs.first.size(), 0.0);
         if (springs.second.size() != springs.first.size() ||
             springs.displacement.size() != springs.first.size() ||
             springs.largestOverlap.size() != springs.first.size())
