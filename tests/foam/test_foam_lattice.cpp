@@ -26,10 +26,10 @@ struct LatticeOnMesh {
         : mesh(std::move(meshIn)), locator(mesh), field(sampled(mesh, u), mesh, PointWeights(mesh)),
           lattice(frameOver(mesh, spacing), [this](const Vec3& x) { return exact(x); }) {}
 
-    std::optional<LatticeNodeValues> exact(const Vec3& x) const {
+    std::optional<GasValues> exact(const Vec3& x) const {
         const TetLocation at = locator.locate(x, -1);
         if (!at.found()) return std::nullopt;
-        return LatticeNodeValues{field.value(mesh, at), {}};
+        return GasValues{field.value(mesh, at), {}};
     }
 
     static FoamVolField<Vec3> sampled(const FoamMesh& mesh,

@@ -41,10 +41,10 @@ void locateAndInterpolate(benchmark::State& state) {
             2 + static_cast<int>((mesh.boundsMax[d] - mesh.boundsMin[d]) * cellsPerSide);
     std::optional<FoamLattice> lattice;
     if (scheme == FoamInterpolation::lattice)
-        lattice.emplace(frame, [&](const Vec3& x) -> std::optional<LatticeNodeValues> {
+        lattice.emplace(frame, [&](const Vec3& x) -> std::optional<GasValues> {
             const TetLocation at = locator.locate(x, -1);
             if (!at.found()) return std::nullopt;
-            return LatticeNodeValues{velocity.value(mesh, at), {}};
+            return GasValues{velocity.value(mesh, at), {}};
         });
 
     const int particles = 10000;

@@ -53,6 +53,40 @@ std::optional<WedgeFrame> findWedge(const FoamMesh& mesh, const std::string& fil
     return frame;
 }
 
+/// U and the scalars present as one field of records; a patch gets face values where any field
+/// has them, the others' taken from the owner cell there, as PointWeights treats a patch without
+/// values (carrier/foam_interpolation.h).
+FoamVolField<GasValues>
+gasRecords(const FoamVolField<Vec3>& velocity,
+           const std::array<std::optional<FoamVolField<double>>, 3>& scalars,
+           const FoamMesh& mesh) {
+    FoamVolField<GasValues> gas;
+    gas.file = velocity.file;
+    gas.cells.resize(velocity.cells.size());
+    for (std::size_t c = 0; c < gas.cells.size(); ++c) {
+        gas.cells[c].velocity = velocity.cells[c];
+        for (int s = 0; s < 3; ++s)
+            if (scalars[s]) gas.cells[c].scalars[s] = scalars[s]->cells[c];
+    }
+    gas.patchValues.resize(mesh.patches.size());
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+        const auto given = [&](const auto& field) { return !field.patchValues[p].empty(); };
+        bool any = given(velocity);
+        for (const auto& scalar : scalars) any = any || (scalar && given(*scalar));
+        if (!any) continue;
+        const int start = mesh.patches[p].start;
+        for (int f = 0; f < mesh.patches[p].size; ++f) {
+            GasValues face = gas.cells[mesh.owner[start + f]];
+            if (given(velocity)) face.velocity = velocity.patchValues[p][f];
+            for (int s = 0; s < 3; ++s)
+                if (scalars[s] && given(*scalars[s]))
+                    face.scalars[s] = scalars[s]->patchValues[p][f];
+            gas.patchValues[p].push_back(face);
+        }
+    }
+    return gas;
+}
+
 } // namespace
 
 Vec3 WedgeFrame::toWedge(const Vec3& x, Mat3& rotation) const {
@@ -99,26 +133,22 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
         timeDirectory_ = series_->firstDirectory();
         return;
     }
-    const PointWeights weights(mesh_);
+    // U, then k, ε and T where present (each within its physical bound), as one record per
+    // cell, face and point (carrier/gas_values.h).
     auto velocity = readFoamVolField<Vec3>(timeDirectory_, "U", mesh_);
-    velocity_ = std::make_unique<InterpolableField<Vec3>>(velocity, mesh_, weights);
-    if (part) velocityRead_ = std::move(velocity);
-    // k, ε and T when present, each within its physical bound.
-    const auto optionalScalar = [&](const std::string& name, double minimum, bool inclusive,
-                                    std::optional<FoamVolField<double>>& read)
-        -> std::unique_ptr<InterpolableField<double>> {
-        if (!FoamFile::exists(timeDirectory_ / name)) return nullptr;
-        auto field = readFoamVolField<double>(timeDirectory_, name, mesh_);
-        requireAtLeast(field, minimum, inclusive, name);
-        auto interpolable = std::make_unique<InterpolableField<double>>(field, mesh_, weights);
-        if (part) read = std::move(field);
-        return interpolable;
-    };
-    k_ = optionalScalar("k", 0, true, scalarsRead_[0]);
-    epsilon_ = optionalScalar("epsilon", 0, true, scalarsRead_[1]);
-    temperature_ = optionalScalar("T", 0, false, scalarsRead_[2]);
+    std::array<std::optional<FoamVolField<double>>, 3> scalars;
+    const std::array<const char*, 3> scalarNames{"k", "epsilon", "T"};
+    for (int s = 0; s < 3; ++s) {
+        if (!FoamFile::exists(timeDirectory_ / scalarNames[s])) continue;
+        scalars[s] = readFoamVolField<double>(timeDirectory_, scalarNames[s], mesh_);
+        requireAtLeast(*scalars[s], 0, s < 2, scalarNames[s]);
+        hasScalar_[s] = true;
+    }
+    auto gas = gasRecords(velocity, scalars, mesh_);
+    gas_ = std::make_unique<InterpolableField<GasValues>>(gas, mesh_, PointWeights(mesh_));
+    if (part) gasRead_ = std::move(gas);
     if (settings_.interpolation == FoamInterpolation::cell)
-        cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
+        cellGradients_ = cellGradients(mesh_, *locator_, *gas_);
     if (settings_.interpolation == FoamInterpolation::lattice) buildLattice(caseDirectory);
 }
 
@@ -126,32 +156,18 @@ void FoamCarrier::shareProcessorPoints(const PartAddressing& addressing,
                                        const PartAllGather& allGather) {
     // A part without processor patches (the only one) shares no point, but takes part.
     const SharedPointWeights shared(mesh_, addressing, allGather);
-    shared.apply(velocityRead_.value_or(FoamVolField<Vec3>{}), velocity_->points);
-    velocity_->refreshFaceMidpoints(mesh_);
-    const std::array<InterpolableField<double>*, 3> scalars{k_.get(), epsilon_.get(),
-                                                            temperature_.get()};
-    for (int s = 0; s < 3; ++s) {
-        if (!scalars[s]) continue;
-        shared.apply(scalarsRead_[s].value_or(FoamVolField<double>{}), scalars[s]->points);
-        scalars[s]->refreshFaceMidpoints(mesh_);
-        scalarsRead_[s].reset();
-    }
-    velocityRead_.reset();
+    shared.apply(gasRead_.value_or(FoamVolField<GasValues>{}), gas_->points);
+    gas_->refreshFaceMidpoints(mesh_);
+    gasRead_.reset();
     if (settings_.interpolation == FoamInterpolation::cell)
-        cellGradients_ = cellGradients(mesh_, *locator_, *velocity_);
+        cellGradients_ = cellGradients(mesh_, *locator_, *gas_);
 }
 
-std::optional<LatticeNodeValues> FoamCarrier::cellPointValues(const Vec3& x, int& tet) const {
+std::optional<GasValues> FoamCarrier::cellPointValues(const Vec3& x, int& tet) const {
     const TetLocation at = locator_->locateFrom(x, tet);
     if (!at.found()) return std::nullopt;
     tet = at.tet;
-    LatticeNodeValues values;
-    values.velocity = velocity_->value(mesh_, at);
-    const std::array<const InterpolableField<double>*, 3> scalars{k_.get(), epsilon_.get(),
-                                                                  temperature_.get()};
-    for (int s = 0; s < 3; ++s)
-        if (scalars[s]) values.scalars[s] = scalars[s]->value(mesh_, at);
-    return values;
+    return gas_->value(mesh_, at);
 }
 
 void FoamCarrier::buildLattice(const std::filesystem::path& caseDirectory) {
@@ -196,12 +212,11 @@ void FoamCarrier::buildLattice(const std::filesystem::path& caseDirectory) {
     frame.origin = base + frame.axes * low;
     int tet = -1;
     lattice_ = std::make_unique<FoamLattice>(
-        frame, [&](const Vec3& x) { return cellPointValues(x, tet); },
-        std::array<bool, 3>{k_ != nullptr, epsilon_ != nullptr, temperature_ != nullptr});
+        frame, [&](const Vec3& x) { return cellPointValues(x, tet); }, hasScalar_);
 
     // Its error against cellPoint at random points of the mesh (those the lattice serves).
     double reference = 0;
-    for (const Vec3& u : velocity_->cells) reference = std::max(reference, u.norm());
+    for (const GasValues& cell : gas_->cells) reference = std::max(reference, cell.velocity.norm());
     std::mt19937 random(1);
     std::uniform_real_distribution<double> unit(0, 1);
     double worst = 0, squares = 0;
@@ -318,21 +333,19 @@ void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNee
     location = at.tet;
     if (levels) return sampleLevelsAt(at, x, rotation, *levels, needs, out, i);
     const bool cellScheme = settings_.interpolation == FoamInterpolation::cell;
-    const auto value = [&](const auto& field) {
-        return cellScheme ? field.cells[at.cell] : field.value(mesh_, at);
-    };
-    out.velocity[i] = rotation * value(*velocity_);
+    const GasValues here = cellScheme ? gas_->cells[at.cell] : gas_->value(mesh_, at);
+    out.velocity[i] = rotation * here.velocity;
     if (needs.velocityGradient) {
         const Mat3 gradient =
-            cellScheme ? cellGradients_[at.cell] : tetGradient(mesh_, *locator_, *velocity_, at);
+            cellScheme ? cellGradients_[at.cell] : tetGradient(mesh_, *locator_, *gas_, at);
         out.velocityGradient[i] =
-            rotation * wedgeHoopGradient(gradient, value(*velocity_), x) * rotation.transpose();
+            rotation * wedgeHoopGradient(gradient, here.velocity, x) * rotation.transpose();
     }
     if (needs.turbulence) {
-        out.turbulentKineticEnergy[i] = value(*k_);
-        out.dissipationRate[i] = value(*epsilon_);
+        out.turbulentKineticEnergy[i] = here.scalars[0];
+        out.dissipationRate[i] = here.scalars[1];
     }
-    if (needs.temperature) out.temperature[i] = value(*temperature_);
+    if (needs.temperature) out.temperature[i] = here.scalars[2];
 }
 
 void FoamCarrier::sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
@@ -343,11 +356,7 @@ void FoamCarrier::sample(std::span<const Vec3> points, double time, CarrierNeeds
 
 void FoamCarrier::sampleFrom(std::span<const Vec3> points, std::span<std::int32_t> locations,
                              double time, CarrierNeeds needs, CarrierSample& out) const {
-    const std::array<const InterpolableField<double>*, 3> frozen{k_.get(), epsilon_.get(),
-                                                                 temperature_.get()};
-    const auto has = [&](std::size_t s) {
-        return series_ ? series_->has(s) : frozen[s] != nullptr;
-    };
+    const auto has = [&](std::size_t s) { return series_ ? series_->has(s) : hasScalar_[s]; };
     if (needs.turbulence && !has(0)) missing("k");
     if (needs.turbulence && !has(1)) missing("epsilon");
     if (needs.temperature && !has(2)) missing("T");
@@ -420,8 +429,8 @@ CarrierNeeds FoamCarrier::provides() const {
                 .temperature = series_->has(2),
                 .timeDerivative = true};
     return {.velocityGradient = true,
-            .turbulence = k_ != nullptr && epsilon_ != nullptr,
-            .temperature = temperature_ != nullptr};
+            .turbulence = hasScalar_[0] && hasScalar_[1],
+            .temperature = hasScalar_[2]};
 }
 
 double FoamCarrier::resolutionLength(std::int32_t location) const {

@@ -100,7 +100,7 @@ private:
     /// plane; and its error against cellPoint, for describe().
     void buildLattice(const std::filesystem::path& caseDirectory);
     /// The point's values by the exact path (locate, cellPoint), nullopt outside the mesh.
-    std::optional<LatticeNodeValues> cellPointValues(const Vec3& x, int& tet) const;
+    std::optional<GasValues> cellPointValues(const Vec3& x, int& tet) const;
 
     std::filesystem::path timeDirectory_;
     FoamCarrierSettings settings_;
@@ -108,13 +108,13 @@ private:
     std::unique_ptr<FoamLocator> locator_;
     std::optional<WedgeFrame> wedge_;
     std::optional<Vec3> emptyNormal_; ///< 2-D mesh: sampled on the plane of the cell centres
-    std::unique_ptr<InterpolableField<Vec3>> velocity_;
-    std::unique_ptr<InterpolableField<double>> k_, epsilon_, temperature_;
+    /// U, k, ε, T side by side per cell, face and point: a sample loads four records.
+    std::unique_ptr<InterpolableField<GasValues>> gas_;
+    std::array<bool, 3> hasScalar_{}; ///< k, ε, T given in the time directory
     std::vector<Mat3> cellGradients_; ///< cell scheme only
-    /// A part of a decomposed case: the fields as read (U, then k, ε, T where present), until
-    /// shareProcessorPoints() has used their boundary values.
-    std::optional<FoamVolField<Vec3>> velocityRead_;
-    std::array<std::optional<FoamVolField<double>>, 3> scalarsRead_;
+    /// A part of a decomposed case: the fields as read, until shareProcessorPoints() has used
+    /// their boundary values.
+    std::optional<FoamVolField<GasValues>> gasRead_;
     std::unique_ptr<FoamLattice> lattice_; ///< lattice scheme only
     std::string latticeReport_;
     std::vector<std::pair<std::string, double>> latticeFigures_;

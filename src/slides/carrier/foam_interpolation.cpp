@@ -128,6 +128,7 @@ template <typename T> std::vector<T> PointWeights::pointValues(const FoamVolFiel
 
 template std::vector<double> PointWeights::pointValues(const FoamVolField<double>&) const;
 template std::vector<Vec3> PointWeights::pointValues(const FoamVolField<Vec3>&) const;
+template std::vector<GasValues> PointWeights::pointValues(const FoamVolField<GasValues>&) const;
 
 template <typename T>
 InterpolableField<T>::InterpolableField(const FoamVolField<T>& field, const FoamMesh& mesh,
@@ -152,23 +153,27 @@ template <typename T> T InterpolableField<T>::value(const FoamMesh&, const TetLo
 
 template struct InterpolableField<double>;
 template struct InterpolableField<Vec3>;
+template struct InterpolableField<GasValues>;
 
+template <typename T>
 Mat3 tetGradient(const FoamMesh& mesh, const FoamLocator& locator,
-                 const InterpolableField<Vec3>& velocity, const TetLocation& at) {
+                 const InterpolableField<T>& velocity, const TetLocation& at) {
     const auto tet = locator.vertices(at.cell, at.face, at.edge);
     const auto ring = mesh.pointsOf(at.face);
     const int n = static_cast<int>(ring.size());
-    const Vec3 u0 = velocity.cells[at.cell];
+    const Vec3 u0 = velocityOf(velocity.cells[at.cell]);
     Mat3 edges, differences;
     edges << tet[1] - tet[0], tet[2] - tet[0], tet[3] - tet[0];
-    differences << velocity.faceMidpoints[at.face] - u0, velocity.points[ring[at.edge]] - u0,
-        velocity.points[ring[(at.edge + 1) % n]] - u0;
+    differences << velocityOf(velocity.faceMidpoints[at.face]) - u0,
+        velocityOf(velocity.points[ring[at.edge]]) - u0,
+        velocityOf(velocity.points[ring[(at.edge + 1) % n]]) - u0;
     // U(x) − U0 = G (x − x0) for each edge: G E = ΔU.
     return differences * edges.inverse();
 }
 
+template <typename T>
 std::vector<Mat3> cellGradients(const FoamMesh& mesh, const FoamLocator& locator,
-                                const InterpolableField<Vec3>& velocity) {
+                                const InterpolableField<T>& velocity) {
     std::vector<Mat3> gradients(mesh.cellCount, Mat3::Zero());
     for (int c = 0; c < mesh.cellCount; ++c) {
         double volume = 0;
@@ -188,5 +193,14 @@ std::vector<Mat3> cellGradients(const FoamMesh& mesh, const FoamLocator& locator
     }
     return gradients;
 }
+
+template Mat3 tetGradient(const FoamMesh&, const FoamLocator&, const InterpolableField<Vec3>&,
+                          const TetLocation&);
+template Mat3 tetGradient(const FoamMesh&, const FoamLocator&, const InterpolableField<GasValues>&,
+                          const TetLocation&);
+template std::vector<Mat3> cellGradients(const FoamMesh&, const FoamLocator&,
+                                         const InterpolableField<Vec3>&);
+template std::vector<Mat3> cellGradients(const FoamMesh&, const FoamLocator&,
+                                         const InterpolableField<GasValues>&);
 
 } // namespace slides

@@ -18,6 +18,7 @@
 
 #include "slides/carrier/foam_field.h"
 #include "slides/carrier/foam_locator.h"
+#include "slides/carrier/gas_values.h"
 
 #include <array>
 #include <span>
@@ -78,12 +79,15 @@ template <typename T> struct InterpolableField {
     T value(const FoamMesh& mesh, const TetLocation& at) const;
 };
 
-/// The constant gradient of U in tetrahedron at (cellPoint): gradient(i, j) = dU_i/dx_j.
+/// The constant gradient of U in tetrahedron at (cellPoint): gradient(i, j) = dU_i/dx_j; T is
+/// Vec3 (U alone) or GasValues.
+template <typename T>
 Mat3 tetGradient(const FoamMesh& mesh, const FoamLocator& locator,
-                 const InterpolableField<Vec3>& velocity, const TetLocation& at);
+                 const InterpolableField<T>& velocity, const TetLocation& at);
 
 /// The gradient of each cell for the cell scheme: volume average of its tetrahedra's gradients.
+template <typename T>
 std::vector<Mat3> cellGradients(const FoamMesh& mesh, const FoamLocator& locator,
-                                const InterpolableField<Vec3>& velocity);
+                                const InterpolableField<T>& velocity);
 
 } // namespace slides

@@ -11,6 +11,7 @@
 //     carrier { type foamField; foamFieldCoeffs { interpolation lattice; latticeSpacing 2e-4; } }
 #pragma once
 
+#include "slides/carrier/gas_values.h"
 #include "slides/core/vector.h"
 
 #include <array>
@@ -27,12 +28,6 @@ struct LatticeFrame {
     double spacing = 1;                ///< [m]
 };
 
-/// What a lattice node holds: U and up to three scalars (k, ε, T; unused ones zero).
-struct LatticeNodeValues {
-    Vec3 velocity = Vec3::Zero();
-    std::array<double, 3> scalars{};
-};
-
 /// The 8 nodes of a point's lattice cell with their trilinear weights.
 struct LatticeWeights {
     std::array<std::size_t, 8> node{};
@@ -43,7 +38,7 @@ struct LatticeWeights {
 class FoamLattice {
 public:
     /// The values at a point, nullopt outside the mesh.
-    using Sampler = std::function<std::optional<LatticeNodeValues>(const Vec3&)>;
+    using Sampler = std::function<std::optional<GasValues>(const Vec3&)>;
 
     /// Samples every node, in order along a₀ first (so a walking sampler moves one node a call);
     /// keeps scalar s only where keepScalar[s] (memory: 24 bytes a node for U, 8 per scalar).

@@ -7,17 +7,6 @@
 
 namespace slides {
 
-std::array<double, 4> barycentricWeights(const std::array<Vec3, 4>& tet, const Vec3& point) {
-    const Vec3 e1 = tet[1] - tet[0], e2 = tet[2] - tet[0], e3 = tet[3] - tet[0];
-    const Vec3 d = point - tet[0];
-    const double det = e1.dot(e2.cross(e3));
-    if (det == 0) return {-1, -1, -1, -1}; // a flat tetrahedron holds nothing
-    const double l1 = d.dot(e2.cross(e3)) / det;
-    const double l2 = e1.dot(d.cross(e3)) / det;
-    const double l3 = e1.dot(e2.cross(d)) / det;
-    return {1 - l1 - l2 - l3, l1, l2, l3};
-}
-
 FoamLocator::FoamLocator(const FoamMesh& mesh) : mesh_(mesh) {
     faceMidpoints_.resize(mesh.faceCount());
     for (int f = 0; f < mesh.faceCount(); ++f) {

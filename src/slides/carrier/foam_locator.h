@@ -92,7 +92,17 @@ private:
     std::vector<Vec3> cellLow_, cellHigh_; ///< each cell's bounding box, with slack
 };
 
-/// Barycentric weights of point in the tetrahedron with the given vertices.
-std::array<double, 4> barycentricWeights(const std::array<Vec3, 4>& tet, const Vec3& point);
+/// Barycentric weights of point in the tetrahedron with the given vertices: λ_i = d·n_i / det
+/// with d = point − tet[0], n_i the cross product of the other two edges from tet[0] and det the
+/// edges' triple product (Cramer's rule); inline, as the walk calls it once a step.
+inline std::array<double, 4> barycentricWeights(const std::array<Vec3, 4>& tet, const Vec3& point) {
+    const Vec3 e1 = tet[1] - tet[0], e2 = tet[2] - tet[0], e3 = tet[3] - tet[0];
+    const Vec3 n1 = e2.cross(e3);
+    const double det = e1.dot(n1);
+    if (det == 0) return {-1, -1, -1, -1}; // a flat tetrahedron holds nothing
+    const Vec3 d = (point - tet[0]) * (1 / det);
+    const double l1 = d.dot(n1), l2 = d.dot(e3.cross(e1)), l3 = d.dot(e1.cross(e2));
+    return {1 - l1 - l2 - l3, l1, l2, l3};
+}
 
 } // namespace slides

@@ -161,5 +161,7 @@ void SharedPointWeights::apply(const FoamVolField<T>& field, std::vector<T>& poi
 
 template void SharedPointWeights::apply(const FoamVolField<double>&, std::vector<double>&) const;
 template void SharedPointWeights::apply(const FoamVolField<Vec3>&, std::vector<Vec3>&) const;
+template void SharedPointWeights::apply(const FoamVolField<GasValues>&,
+                                        std::vector<GasValues>&) const;
 
 } // namespace slides
