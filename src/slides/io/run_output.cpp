@@ -81,7 +81,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
                                      " particles, the checkpoint counts " +
                                      std::to_string(frames_[n].count) + "; cannot restart");
             ParticleFrame frame = stored.view(fields_, heating_, spinning_, electromagnetic_.on());
-            attachInjectors(frame);
+            std::vector<std::int32_t> injectors;
+            attachInjectors(frame, injectors);
             hdf5_->writeFrame(frames_[n].time, frame);
         }
     }
@@ -93,43 +94,53 @@ void RunOutput::writeCarrier(const CarrierField& carrier, const Box& domain) con
 
 void RunOutput::writeFrame(const RunSnapshot& snapshot) {
     const ParticleCloud& cloud = snapshot.cloud;
-    ids_.assign(cloud.id.begin(), cloud.id.end());
-    positions_.assign(cloud.position.begin(), cloud.position.end());
-    velocities_.assign(cloud.velocity.begin(), cloud.velocity.end());
-    radii_.assign(cloud.radius.begin(), cloud.radius.end());
-    states_.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
-    temperatures_.assign(cloud.temperature.begin(), cloud.temperature.end());
-    spins_.assign(cloud.angularVelocity.begin(), cloud.angularVelocity.end());
-    charges_.assign(cloud.charge.begin(), cloud.charge.end());
-    for (const auto& arrival : snapshot.arrivals) {
-        ids_.push_back(arrival.id);
-        positions_.push_back(arrival.position);
-        velocities_.push_back(arrival.velocity);
-        radii_.push_back(arrival.radius);
-        states_.push_back(static_cast<std::int32_t>(ParticleState::arrived));
-        temperatures_.push_back(arrival.temperature);
-        spins_.push_back(arrival.angularVelocity);
-        if (electromagnetic_.on()) charges_.push_back(electromagnetic_.chargeOf(arrival.radius));
+    // The moving particles (state active), then the arrivals (state arrived). Without arrivals
+    // the frame reads the cloud's arrays in place; with them it reads copies held for this
+    // frame only, so that no particle's data is held twice between frames.
+    StoredParticleFrame gathered;
+    gathered.state.assign(cloud.size(), static_cast<std::int32_t>(ParticleState::active));
+    ParticleFrame frame{cloud.id,     cloud.position, cloud.velocity,
+                        cloud.radius, gathered.state, fields_};
+    if (heating_) frame.temperature = cloud.temperature;
+    if (spinning_) frame.angularVelocity = cloud.angularVelocity;
+    if (electromagnetic_.on()) frame.charge = cloud.charge;
+    if (!snapshot.arrivals.empty()) {
+        gathered.id.assign(cloud.id.begin(), cloud.id.end());
+        gathered.position.assign(cloud.position.begin(), cloud.position.end());
+        gathered.velocity.assign(cloud.velocity.begin(), cloud.velocity.end());
+        gathered.radius.assign(cloud.radius.begin(), cloud.radius.end());
+        gathered.temperature.assign(cloud.temperature.begin(), cloud.temperature.end());
+        gathered.angularVelocity.assign(cloud.angularVelocity.begin(), cloud.angularVelocity.end());
+        gathered.charge.assign(cloud.charge.begin(), cloud.charge.end());
+        for (const auto& arrival : snapshot.arrivals) {
+            gathered.id.push_back(arrival.id);
+            gathered.position.push_back(arrival.position);
+            gathered.velocity.push_back(arrival.velocity);
+            gathered.radius.push_back(arrival.radius);
+            gathered.state.push_back(static_cast<std::int32_t>(ParticleState::arrived));
+            gathered.temperature.push_back(arrival.temperature);
+            gathered.angularVelocity.push_back(arrival.angularVelocity);
+            if (electromagnetic_.on())
+                gathered.charge.push_back(electromagnetic_.chargeOf(arrival.radius));
+        }
+        frame = gathered.view(fields_, heating_, spinning_, electromagnetic_.on());
     }
+    std::vector<std::int32_t> injectors;
+    attachInjectors(frame, injectors);
     const std::string name = frameFileName(frames_.size());
-    ParticleFrame frame{ids_, positions_, velocities_, radii_, states_, fields_};
-    if (heating_) frame.temperature = temperatures_;
-    if (spinning_) frame.angularVelocity = spins_;
-    if (electromagnetic_.on()) frame.charge = charges_;
-    attachInjectors(frame);
     writeParticlesVtp(directory_ / name, frame);
     const double time = snapshot.counters.time;
     if (hdf5_) hdf5_->writeFrame(time, frame);
     series_.add(time, name);
-    frames_.push_back({time, ids_.size()});
+    frames_.push_back({time, frame.id.size()});
 }
 
-void RunOutput::attachInjectors(ParticleFrame& frame) {
+void RunOutput::attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors) const {
     if (injectorFirstIds_.empty()) return;
-    injectors_.resize(frame.id.size());
+    injectors.resize(frame.id.size());
     for (std::size_t i = 0; i < frame.id.size(); ++i)
-        injectors_[i] = injectorOfId(injectorFirstIds_, frame.id[i]);
-    frame.injector = injectors_;
+        injectors[i] = injectorOfId(injectorFirstIds_, frame.id[i]);
+    frame.injector = injectors;
 }
 
 void RunOutput::finish(const RunSnapshot& snapshot, const nlohmann::json& summary) {

@@ -61,8 +61,8 @@ public:
     const std::vector<FrameRecord>& frames() const { return frames_; }
 
 private:
-    /// With several injectors, frame's `injector` array from its ids (into injectors_).
-    void attachInjectors(ParticleFrame& frame);
+    /// With several injectors, frame's `injector` array from its ids, held in `injectors`.
+    void attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors) const;
 
     std::filesystem::path directory_;
     std::array<int, 3> carrierResolution_;
@@ -70,20 +70,10 @@ private:
     std::optional<ParticlesHdf5> hdf5_;
     ParticleFieldSet fields_;
     std::vector<FrameRecord> frames_;
-    // Frame scratch: moving particles then arrivals.
-    std::vector<std::uint64_t> ids_;
-    std::vector<Vec3> positions_;
-    std::vector<Vec3> velocities_;
-    std::vector<double> radii_;
-    std::vector<std::int32_t> states_;
-    bool heating_;                     ///< particles carry a temperature
-    bool spinning_;                    ///< particles carry a spin ω
-    std::vector<double> temperatures_; ///< [K], with heat transfer
-    std::vector<Vec3> spins_;          ///< ω [rad/s], with spin
+    bool heating_;  ///< particles carry a temperature
+    bool spinning_; ///< particles carry a spin ω
     ElectromagneticSettings electromagnetic_;
-    std::vector<double> charges_; ///< q [C], with electromagnetic forces
     std::vector<std::uint64_t> injectorFirstIds_;
-    std::vector<std::int32_t> injectors_; ///< each particle's injector, with several
 };
 
 } // namespace slides

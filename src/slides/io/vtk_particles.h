@@ -50,7 +50,8 @@ struct ParticleFrame {
 /// std::invalid_argument if the spans differ in length.
 void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& frame);
 
-/// A frame read back from its .vtp file, owning one entry per particle in every array. An array
+/// A frame owning one entry per particle in every array: read back from its .vtp file, or
+/// gathered from several sources (a run's moving particles and arrivals). An array
 /// the file does not hold (not in output.fields) is filled so that the frame writes the same
 /// values again: velocity (speed, 0, 0) where only the speed was written (√(s²) = s exactly in
 /// IEEE arithmetic), zero otherwise.
