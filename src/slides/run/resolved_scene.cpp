@@ -75,11 +75,11 @@ ResolvedScene resolveScene(const std::filesystem::path& caseDirectory,
                 automatic.unavailable = "not supported in parallel runs yet";
     std::unique_ptr<const CarrierField> carrier =
         ranks.parallel()
-            ? std::make_unique<RankCarrier>(caseDirectory,
-                                            FoamCarrierSettings{scene.carrier.foamTime,
-                                                                scene.carrier.interpolation,
-                                                                scene.carrier.latticeSpacing},
-                                            ranks)
+            ? std::make_unique<RankCarrier>(
+                  caseDirectory,
+                  FoamCarrierSettings{scene.carrier.foamTime, scene.carrier.interpolation,
+                                      scene.carrier.latticeSpacing, std::nullopt /* no series */},
+                  ranks)
             : carrierOf(scene);
     if (scene.domainFromCarrier) scene.domain = carrier->bounds().value();
     requireInjectionInside(scene, *carrier);
