@@ -110,6 +110,16 @@ const PackedEnsemble& jammedPacking() {
     return packed;
 }
 
+/// Unequal spheres at volume fraction φ packed into the region by the method: every one
+/// placed, none overlapping another or crossing the region's walls.
+void expectUnequalSpheresPackedInside(PackingMethod method, const PackingRegion& region,
+                                      double fraction) {
+    const PackedEnsemble packed = pack(method, region, unequalRadii(countAt(fraction, region)));
+    ASSERT_TRUE(packed.complete);
+    EXPECT_LE(largestOverlap(region, packed), 0.0);
+    EXPECT_TRUE(allInside(region, packed));
+}
+
 } // namespace
 
 TEST(RandomSequentialAddition, UnequalSpheresInACylinderNeitherOverlapNorCrossItsWall) {
@@ -119,11 +129,7 @@ TEST(RandomSequentialAddition, UnequalSpheresInACylinderNeitherOverlapNorCrossIt
     region.axis = Vec3(1, 1, 0).normalized();
     region.radius = 4;
     region.length = 10;
-    const PackedEnsemble packed =
-        pack(PackingMethod::randomSequentialAddition, region, unequalRadii(countAt(0.2, region)));
-    ASSERT_TRUE(packed.complete);
-    EXPECT_LE(largestOverlap(region, packed), 0.0);
-    EXPECT_TRUE(allInside(region, packed));
+    expectUnequalSpheresPackedInside(PackingMethod::randomSequentialAddition, region, 0.2);
 }
 
 TEST(RandomSequentialAddition, EqualSpheresSaturateAtTheKnownFractionAndStall) {
@@ -174,12 +180,7 @@ TEST(LubachevskyStillinger, JamsNearRandomClosePacking) {
 }
 
 TEST(LubachevskyStillinger, UnequalSpheresInsideWallsNeitherOverlapNorCrossThem) {
-    const PackingRegion region = cube(6, false);
-    const PackedEnsemble packed =
-        pack(PackingMethod::lubachevskyStillinger, region, unequalRadii(countAt(0.45, region)));
-    ASSERT_TRUE(packed.complete);
-    EXPECT_LE(largestOverlap(region, packed), 0.0);
-    EXPECT_TRUE(allInside(region, packed));
+    expectUnequalSpheresPackedInside(PackingMethod::lubachevskyStillinger, cube(6, false), 0.45);
 }
 
 TEST(LubachevskyStillinger, RadialDistributionPeaksAtContact) {
