@@ -1,6 +1,6 @@
 // Broken copies of the default case: one piece of its dictionary replaced, run through the
 // command line, which must refuse it with one message naming file, line and key, exit status 2,
-// and no output directory.
+// and no output directory; RefusedCase runs a table of them.
 #pragma once
 
 #include "case_runs.h"
@@ -48,6 +48,18 @@ inline void expectRefused(const BrokenCase& broken) {
     EXPECT_EQ(message.find("error:"), message.rfind("error:")) << "one message: " << message;
     EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides"))
         << "bad input must not create output";
+}
+
+/// A table of broken cases, each refused as expectRefused says; a test program instantiates it
+/// with its table: INSTANTIATE_TEST_SUITE_P(Group, RefusedCase, ValuesIn(table), brokenCaseName).
+class RefusedCase : public ::testing::TestWithParam<BrokenCase> {};
+
+TEST_P(RefusedCase, WithExitStatus2AndOneMessageNamingFileLineAndKeyBeforeAnythingIsWritten) {
+    expectRefused(GetParam());
+}
+
+inline std::string brokenCaseName(const ::testing::TestParamInfo<BrokenCase>& info) {
+    return info.param.name;
 }
 
 } // namespace slides::test

@@ -11,12 +11,6 @@
 namespace slides {
 namespace {
 
-class InputLimits : public ::testing::TestWithParam<test::BrokenCase> {};
-
-TEST_P(InputLimits, RefusedWithExitStatus2BeforeAnythingIsWritten) {
-    test::expectRefused(GetParam());
-}
-
 const test::BrokenCase limitCases[] = {
     {"densityPastAnyMaterial", "    density     5680;", "    density     1e308;", 0,
      "key 'particles.density': must be at most 100000"},
@@ -67,8 +61,9 @@ const test::BrokenCase limitCases[] = {
      "box: 75 % of it (6000 of 8000 points spread evenly over it) lies outside"},
 };
 
-INSTANTIATE_TEST_SUITE_P(Values, InputLimits, ::testing::ValuesIn(limitCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+using test::RefusedCase;
+INSTANTIATE_TEST_SUITE_P(InputLimits, RefusedCase, ::testing::ValuesIn(limitCases),
+                         test::brokenCaseName);
 
 } // namespace
 } // namespace slides

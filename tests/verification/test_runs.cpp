@@ -227,12 +227,6 @@ TEST(CommandLine, RunsTheDefaultCaseAndWritesEveryOutput) {
             << "temporary left behind: " << entry.path();
 }
 
-class CommandLineRejects : public ::testing::TestWithParam<test::BrokenCase> {};
-
-TEST_P(CommandLineRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
-    test::expectRefused(GetParam());
-}
-
 const test::BrokenCase brokenCases[] = {
     {"unknownKey", "    density     5680;", "    density     5680;\n    densty 1;", 1,
      "key 'particles.densty': unknown key; valid keys here are:"},
@@ -269,8 +263,9 @@ const test::BrokenCase brokenCases[] = {
      "key 'injection.latticeCoeffs.sites': hold fewer sites than particles.count"},
 };
 
-INSTANTIATE_TEST_SUITE_P(BrokenCases, CommandLineRejects, ::testing::ValuesIn(brokenCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+using test::RefusedCase;
+INSTANTIATE_TEST_SUITE_P(CommandLineRejects, RefusedCase, ::testing::ValuesIn(brokenCases),
+                         test::brokenCaseName);
 
 TEST(CommandLine, MissingDictionaryIsAnInputError) {
     ScratchDirectory scratch("missing");
