@@ -6,26 +6,28 @@ three depths (from damage.h5).
 
     python3 tools/plot_damage.py RUN_DIRECTORY out.png [--surface layer]
 """
-import argparse
 import glob
 import os
 
-import h5py
-import matplotlib
+from tool_startup import run_output_arguments, system_python_or_exit
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+try:
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+except ImportError as error:
+    system_python_or_exit(error, "python3-vtk9 python3-matplotlib python3-h5py")
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("run")
-    parser.add_argument("out")
+    parser = run_output_arguments(__doc__)
     parser.add_argument("--surface", default="layer")
     args = parser.parse_args()
-    frames = sorted(glob.glob(os.path.join(args.run, f"damage_{args.surface}_*.vti")))
+    frames = sorted(glob.glob(os.path.join(args.output_directory, f"damage_{args.surface}_*.vti")))
     reader = vtkXMLImageDataReader()
     reader.SetFileName(frames[-1])
     reader.Update()
@@ -48,7 +50,7 @@ def main():
     axes[1].set_ylabel("depth [mm]")
     fig.colorbar(shown, ax=axes[1])
 
-    with h5py.File(os.path.join(args.run, "damage.h5"), "r") as h5:
+    with h5py.File(os.path.join(args.output_directory, "damage.h5"), "r") as h5:
         time = h5[f"{args.surface}/centreLineTime"][:]
         stress = h5[f"{args.surface}/centreLineSigmaEq"][:]
     for k in (1, nz // 2, nz - 1):
@@ -60,7 +62,7 @@ def main():
     axes[2].set_title("σ_eq on the centre line, per impact")
     axes[2].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(args.out, dpi=90)
+    fig.savefig(args.png, dpi=90)
 
 
 if __name__ == "__main__":

@@ -9,10 +9,11 @@ own axes u, v) and deposit.vtp (every stuck particle), and writes a PNG with the
 particle's centre against its in-plane distance from the deposit's centroid), with Eq. 5.12's
 n_dep and h_dep from summary.json in the title. Needs python3-vtk9, python3-matplotlib.
 """
-import argparse
 import json
 import os
 import sys
+
+from tool_startup import run_output_arguments, system_python_or_exit
 
 try:
     import matplotlib
@@ -23,15 +24,11 @@ try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOXML import vtkXMLImageDataReader, vtkXMLPolyDataReader
 except ImportError as error:
-    if sys.executable != "/usr/bin/python3" and os.path.exists("/usr/bin/python3"):
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
-    sys.exit(f"plot_deposit.py: {error} (Debian: apt-get install python3-vtk9 python3-matplotlib)")
+    system_python_or_exit(error, "python3-vtk9 python3-matplotlib")
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("output_directory")
-    parser.add_argument("png")
+    parser = run_output_arguments(__doc__)
     parser.add_argument("--surface", help="deposit surface (default: the first deposit_*.vti)")
     args = parser.parse_args()
     directory = args.output_directory

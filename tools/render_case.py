@@ -12,28 +12,18 @@ other axis with the smaller mean |U| component (the extrusion axis of a planar j
 Needs VTK's Python bindings (Debian: python3-vtk9); renders off screen, without a display
 under xvfb-run (Debian: xvfb; tools/setup installs both).
 """
-import argparse
 import os
 import re
-import shutil
 import sys
 import xml.etree.ElementTree as ElementTree
 
-# Debian's VTK renders through X even off screen: without a display, run under a virtual one
-# (without either, VTK aborts the process when it opens the window).
-if not os.environ.get("DISPLAY"):
-    if not shutil.which("xvfb-run"):
-        sys.exit("render_case.py: no X display (DISPLAY is not set) and no xvfb-run to make one: "
-                 "install xvfb (tools/setup does)")
-    os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
+from tool_startup import ensure_display, run_output_arguments, system_python_or_exit
 
+ensure_display()
 try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
 except ImportError as error:
-    # A pyenv or venv python3 does not see Debian's python3-vtk9: retry with the system one.
-    if sys.executable != "/usr/bin/python3" and os.path.exists("/usr/bin/python3"):
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
-    sys.exit(f"render_case.py: {error} (Debian: apt-get install python3-vtk9 python3-numpy)")
+    system_python_or_exit(error, "python3-vtk9 python3-numpy")
 
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text rendering)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window implementation)
@@ -206,9 +196,7 @@ def particle_actor(particles):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("output_directory", help="the run's output, e.g. CASE/slides")
-    parser.add_argument("png", help="image to write")
+    parser = run_output_arguments(__doc__)
     parser.add_argument("--normal", choices=AXES, help="view along this axis")
     parser.add_argument("--time", type=float, help="show the frame nearest this time [s] "
                         "(default: the last frame)")

@@ -9,23 +9,17 @@ in half by the plane through its centre normal to --cut (default x), so the insi
 Renders off screen; without a display, under xvfb-run (Debian: python3-vtk9, xvfb).
 """
 
-import argparse
 import os
-import shutil
 import sys
 import xml.etree.ElementTree as ElementTree
 
-if not os.environ.get("DISPLAY"):
-    if not shutil.which("xvfb-run"):
-        sys.exit("render_packing.py: no X display (DISPLAY is not set) and no xvfb-run to make one")
-    os.execvp("xvfb-run", ["xvfb-run", "-a", sys.executable, *sys.argv])
+from tool_startup import ensure_display, run_output_arguments, system_python_or_exit
 
+ensure_display()
 try:
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the render window implementation)
 except ImportError as error:
-    if sys.executable != "/usr/bin/python3" and os.path.exists("/usr/bin/python3"):
-        os.execv("/usr/bin/python3", ["/usr/bin/python3", *sys.argv])
-    sys.exit(f"render_packing.py: {error} (Debian: apt-get install python3-vtk9)")
+    system_python_or_exit(error, "python3-vtk9")
 
 from vtkmodules.vtkCommonDataModel import vtkPlane
 from vtkmodules.vtkFiltersCore import vtkGlyph3D
@@ -54,13 +48,11 @@ def first_frame_with_particles(run):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("run")
-    parser.add_argument("png")
+    parser = run_output_arguments(__doc__)
     parser.add_argument("--cut", choices="xyz", default="x")
     arguments = parser.parse_args()
 
-    particles = first_frame_with_particles(arguments.run)
+    particles = first_frame_with_particles(arguments.output_directory)
     bounds = particles.GetBounds()
     centre = [(bounds[2 * a] + bounds[2 * a + 1]) / 2 for a in range(3)]
     axis = "xyz".index(arguments.cut)
