@@ -4,9 +4,7 @@
 #include "slides/carrier/carrier_settings.h"
 #include "slides/core/name_table.h"
 
-#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -87,35 +85,24 @@ BickleyProfile bickleyCoefficients(const JetNozzle& nozzle, const AnalyticJetPar
 } // namespace
 
 AnalyticJet::AnalyticJet(const JetNozzle& nozzle, const AnalyticJetParameters& parameters)
-    : profile_(bickleyCoefficients(nozzle, parameters)),
-      frame_(nozzle, parameters.profile, parameters.coreLength,
-             std::pow(profile_.C1 / parameters.nozzleVelocity, 3)) {}
+    : SimilarityJet(bickleyCoefficients(nozzle, parameters), nozzle, parameters.profile,
+                    parameters.coreLength, parameters.nozzleVelocity) {}
 
-void AnalyticJet::sample(std::span<const Vec3> points, double /*time: steady*/, CarrierNeeds needs,
+void AnalyticJet::sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                          CarrierSample& out) const {
-    if (needs.velocityGradient) return frame_.sample(profile_, points, needs, out);
+    if (needs.velocityGradient) return SimilarityJet::sample(points, time, needs, out);
     out.resize(points.size(), needs); // U alone: the SIMD kernel
-    sampleBickleyVelocity(frame_, profile_, points, out.velocity);
-}
-
-double AnalyticJet::centrelineVelocity(double axialDistance) const {
-    if (axialDistance < 0) return 0;
-    return profile_.C1 / std::cbrt(frame_.similarityCoordinate(axialDistance));
-}
-
-double AnalyticJet::halfWidth(double axialDistance) const {
-    const double s = frame_.similarityCoordinate(std::max(axialDistance, 0.0));
-    return std::acosh(std::numbers::sqrt2) * std::cbrt(s * s) / profile_.C3;
+    sampleBickleyVelocity(frame(), profile(), points, out.velocity);
 }
 
 std::string AnalyticJet::describe() const {
     std::ostringstream text;
     text.precision(4);
-    text << "analyticJet (" << nameOf(jetGeometryNames(), frame_.geometry())
-         << " sech², Eq. 5.10/5.11): C1 = " << profile_.C1 << " m^(4/3)/s, C2 = " << profile_.C2
-         << " m^(5/3)/s, C3 = " << profile_.C3 << " m^(-1/3), K = " << momentumFlux()
-         << " m^3/s^2, virtual origin " << frame_.virtualOrigin() << " m, core "
-         << frame_.coreLength() << " m";
+    text << "analyticJet (" << nameOf(jetGeometryNames(), frame().geometry())
+         << " sech², Eq. 5.10/5.11): C1 = " << C1() << " m^(4/3)/s, C2 = " << C2()
+         << " m^(5/3)/s, C3 = " << C3() << " m^(-1/3), K = " << momentumFlux()
+         << " m^3/s^2, virtual origin " << virtualOrigin() << " m, core " << frame().coreLength()
+         << " m";
     return text.str();
 }
 

@@ -27,8 +27,10 @@
 //               It is the reference's model; for a mass-conserving round jet use roundLaminarJet.
 #pragma once
 
-#include "slides/carrier/jet_frame.h"
+#include "slides/carrier/similarity_jet.h"
 
+#include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -48,9 +50,15 @@ struct AnalyticJetParameters {
 struct BickleyProfile {
     double C1 = 0, C2 = 0, C3 = 0;
     ProfileSample at(double s, double y) const;
+    double centrelineVelocity(double s) const { return C1 / std::cbrt(s); } ///< C1 s^(−1/3)
+    /// y½ where sech²η = 1/2 (η½ = arccosh √2): η½ s^(2/3)/C3 [m].
+    double halfWidth(double s) const {
+        return std::acosh(std::numbers::sqrt2) * std::cbrt(s * s) / C3;
+    }
+    double virtualOrigin(double U0) const { return std::pow(C1 / U0, 3); } ///< (C1/U0)³ [m]
 };
 
-class AnalyticJet final : public CarrierField {
+class AnalyticJet final : public SimilarityJet<BickleyProfile> {
 public:
     /// Throws std::invalid_argument (clear message) for U0 ≤ 0, ν ≤ 0 without explicit
     /// coefficients, only one of C1/C3, non-positive C1/C3, a C2 that contradicts continuity
@@ -61,24 +69,11 @@ public:
                 CarrierSample& out) const override;
     std::string describe() const override;
 
-    double C1() const { return profile_.C1; } ///< [m^(4/3)/s]
-    double C2() const { return profile_.C2; } ///< [m^(5/3)/s]
-    double C3() const { return profile_.C3; } ///< [m^(−1/3)]
-    const BickleyProfile& profile() const { return profile_; }
-    const JetFrame& frame() const { return frame_; }
-    double virtualOrigin() const { return frame_.virtualOrigin(); } ///< s0 = (C1/U0)³ [m]
+    double C1() const { return profile().C1; } ///< [m^(4/3)/s]
+    double C2() const { return profile().C2; } ///< [m^(5/3)/s]
+    double C3() const { return profile().C3; } ///< [m^(−1/3)]
     /// K = (4/3) C1²/C3 = ∫u² dy per unit depth (= 2 b U0² unless C1, C3 were given) [m³/s²].
-    double momentumFlux() const { return 4.0 / 3.0 * profile_.C1 * profile_.C1 / profile_.C3; }
-    /// Centreline speed at axial distance a from the exit plane: 0 behind it, U0 in the core,
-    /// C1 s^(−1/3) beyond [m/s].
-    double centrelineVelocity(double axialDistance) const;
-    /// Half-width y½ where u = u_centre/2 (sech²η = 1/2, η½ = arccosh √2), at axial distance
-    /// a ≥ 0: η½ s^(2/3)/C3 [m].
-    double halfWidth(double axialDistance) const;
-
-private:
-    BickleyProfile profile_;
-    JetFrame frame_;
+    double momentumFlux() const { return 4.0 / 3.0 * C1() * C1() / C3(); }
 };
 
 } // namespace slides

@@ -1,6 +1,5 @@
 #include "slides/carrier/round_laminar_jet.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -40,6 +39,12 @@ void require(bool condition, const std::string& message) {
     if (!condition) throw std::invalid_argument("roundLaminarJet: " + message);
 }
 
+/// K = π R² U0² of a round nozzle of radius R [m⁴/s²].
+double roundMomentumFlux(const JetNozzle& nozzle, const RoundLaminarJetParameters& jet) {
+    return std::numbers::pi * nozzle.radius * nozzle.radius * jet.nozzleVelocity *
+           jet.nozzleVelocity;
+}
+
 RoundLaminarProfile roundProfile(double K, const RoundLaminarJetParameters& jet) {
     const double nu = jet.viscosity;
     require(std::isfinite(jet.nozzleVelocity) && jet.nozzleVelocity > 0,
@@ -56,33 +61,16 @@ RoundLaminarProfile roundProfile(double K, const RoundLaminarJetParameters& jet)
 
 RoundLaminarJet::RoundLaminarJet(const JetNozzle& nozzle,
                                  const RoundLaminarJetParameters& parameters)
-    : momentumFlux_(std::numbers::pi * nozzle.radius * nozzle.radius * parameters.nozzleVelocity *
-                    parameters.nozzleVelocity),
-      profile_(roundProfile(momentumFlux_, parameters)),
-      frame_(nozzle, JetGeometry::axisymmetric, parameters.coreLength,
-             profile_.amplitude / parameters.nozzleVelocity) {}
-
-void RoundLaminarJet::sample(std::span<const Vec3> points, double /*time: steady*/,
-                             CarrierNeeds needs, CarrierSample& out) const {
-    frame_.sample(profile_, points, needs, out);
-}
-
-double RoundLaminarJet::centrelineVelocity(double axialDistance) const {
-    if (axialDistance < 0) return 0;
-    return profile_.amplitude / frame_.similarityCoordinate(axialDistance);
-}
-
-double RoundLaminarJet::halfWidth(double axialDistance) const {
-    const double s = frame_.similarityCoordinate(std::max(axialDistance, 0.0));
-    return 2.0 * std::sqrt(std::numbers::sqrt2 - 1.0) * s / profile_.similarity;
-}
+    : SimilarityJet(roundProfile(roundMomentumFlux(nozzle, parameters), parameters), nozzle,
+                    JetGeometry::axisymmetric, parameters.coreLength, parameters.nozzleVelocity),
+      momentumFlux_(roundMomentumFlux(nozzle, parameters)) {}
 
 std::string RoundLaminarJet::describe() const {
     std::ostringstream text;
     text.precision(4);
     text << "roundLaminarJet (Schlichting's round laminar jet): K = " << momentumFlux_
-         << " m^4/s^2, virtual origin " << frame_.virtualOrigin() << " m, core "
-         << frame_.coreLength() << " m";
+         << " m^4/s^2, virtual origin " << virtualOrigin() << " m, core " << frame().coreLength()
+         << " m";
     return text.str();
 }
 

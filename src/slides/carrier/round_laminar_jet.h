@@ -17,8 +17,10 @@
 // = (3/8) R² U0/ν; core and coordinates as in carrier/jet_frame.h (geometry axisymmetric).
 #pragma once
 
-#include "slides/carrier/jet_frame.h"
+#include "slides/carrier/similarity_jet.h"
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 namespace slides {
@@ -35,32 +37,25 @@ struct RoundLaminarProfile {
     double radialAmplitude = 0; ///< √(3K/π)/4 [m²/s]: v = radialAmplitude·(ξ − ξ³/4)(…)^(−2)/s
     double similarity = 0; ///< √(3K/π)/(4ν) [1]: ξ = similarity·r/s
     ProfileSample at(double s, double r) const;
+    double centrelineVelocity(double s) const { return amplitude / s; } ///< 3K/(8πν s) [m/s]
+    /// r½ where (1 + ξ²/4)² = 2 (ξ½ = 2 √(√2 − 1)): ξ½ s/similarity [m].
+    double halfWidth(double s) const {
+        return 2.0 * std::sqrt(std::numbers::sqrt2 - 1.0) * s / similarity;
+    }
+    double virtualOrigin(double U0) const { return amplitude / U0; } ///< 3K/(8πν U0) [m]
 };
 
-class RoundLaminarJet final : public CarrierField {
+class RoundLaminarJet final : public SimilarityJet<RoundLaminarProfile> {
 public:
     /// Throws std::invalid_argument for U0 ≤ 0, ν ≤ 0 or an invalid nozzle (see JetFrame).
     RoundLaminarJet(const JetNozzle& nozzle, const RoundLaminarJetParameters& parameters);
 
-    void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
-                CarrierSample& out) const override;
     std::string describe() const override;
 
-    const RoundLaminarProfile& profile() const { return profile_; }
-    const JetFrame& frame() const { return frame_; }
-    double virtualOrigin() const { return frame_.virtualOrigin(); } ///< 3K/(8πν U0) [m]
-    double momentumFlux() const { return momentumFlux_; }           ///< K = π R² U0² [m⁴/s²]
-    /// Centreline speed at axial distance a: 0 behind the exit plane, U0 in the core,
-    /// 3K/(8πν s) beyond [m/s].
-    double centrelineVelocity(double axialDistance) const;
-    /// Half-width r½ where u = u_centre/2 ((1 + ξ²/4)² = 2, ξ½ = 2 √(√2 − 1)), at axial
-    /// distance a ≥ 0: ξ½ s/similarity [m].
-    double halfWidth(double axialDistance) const;
+    double momentumFlux() const { return momentumFlux_; } ///< K = π R² U0² [m⁴/s²]
 
 private:
     double momentumFlux_;
-    RoundLaminarProfile profile_;
-    JetFrame frame_;
 };
 
 } // namespace slides
