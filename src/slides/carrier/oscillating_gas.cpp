@@ -19,9 +19,7 @@ void OscillatingGas::sample(std::span<const Vec3> points, double time, CarrierNe
     out.resize(points.size(), needs);
     std::fill(out.velocity.begin(), out.velocity.end(), velocity(time));
     std::fill(out.velocityGradient.begin(), out.velocityGradient.end(), Mat3::Zero());
-    std::fill(out.turbulentKineticEnergy.begin(), out.turbulentKineticEnergy.end(), 0.0);
-    std::fill(out.dissipationRate.begin(), out.dissipationRate.end(), 0.0);
-    std::fill(out.temperature.begin(), out.temperature.end(), temperature_);
+    fillLaminarScalars(out);
     std::fill(out.velocityTimeDerivative.begin(), out.velocityTimeDerivative.end(),
               acceleration(time));
 }

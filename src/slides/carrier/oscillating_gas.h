@@ -7,25 +7,21 @@
 //     carrier { type oscillatingGas; oscillatingGasCoeffs { amplitude (1 0 0); frequency 50; } }
 #pragma once
 
-#include "slides/carrier/carrier_field.h"
+#include "slides/carrier/unsteady_analytic_carrier.h"
 
 #include <numbers>
 
 namespace slides {
 
-class OscillatingGas final : public CarrierField {
+class OscillatingGas final : public UnsteadyAnalyticCarrier {
 public:
     /// amplitude U [m/s], frequency f [Hz], the gas temperature [K] for heating.
     OscillatingGas(const Vec3& amplitude, double frequency, double temperature)
-        : amplitude_(amplitude), angularFrequency_(2 * std::numbers::pi * frequency),
-          temperature_(temperature) {}
+        : UnsteadyAnalyticCarrier(temperature), amplitude_(amplitude),
+          angularFrequency_(2 * std::numbers::pi * frequency) {}
 
     void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                 CarrierSample& out) const override;
-    bool steady() const override { return false; }
-    CarrierNeeds provides() const override {
-        return {.velocityGradient = true, .temperature = true, .timeDerivative = true};
-    }
     std::string describe() const override;
 
     /// U sin ωt [m/s].
@@ -36,7 +32,6 @@ public:
 private:
     Vec3 amplitude_;
     double angularFrequency_;
-    double temperature_;
 };
 
 } // namespace slides

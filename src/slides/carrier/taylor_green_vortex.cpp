@@ -1,6 +1,5 @@
 #include "slides/carrier/taylor_green_vortex.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -9,8 +8,8 @@ namespace slides {
 
 TaylorGreenVortex::TaylorGreenVortex(double velocity, double wavelength, double viscosity,
                                      double temperature)
-    : velocity_(velocity), wavenumber_(2 * std::numbers::pi / wavelength), viscosity_(viscosity),
-      temperature_(temperature) {}
+    : UnsteadyAnalyticCarrier(temperature), velocity_(velocity),
+      wavenumber_(2 * std::numbers::pi / wavelength), viscosity_(viscosity) {}
 
 Vec3 TaylorGreenVortex::velocity(const Vec3& x, double time) const {
     const double k = wavenumber_;
@@ -45,9 +44,7 @@ void TaylorGreenVortex::sample(std::span<const Vec3> points, double time, Carrie
         }
         if (needs.timeDerivative) out.velocityTimeDerivative[i] = -decayRate * u;
     }
-    std::fill(out.turbulentKineticEnergy.begin(), out.turbulentKineticEnergy.end(), 0.0);
-    std::fill(out.dissipationRate.begin(), out.dissipationRate.end(), 0.0);
-    std::fill(out.temperature.begin(), out.temperature.end(), temperature_);
+    fillLaminarScalars(out);
 }
 
 std::string TaylorGreenVortex::describe() const {

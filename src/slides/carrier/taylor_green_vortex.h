@@ -9,21 +9,17 @@
 //     carrier { type taylorGreenVortex; taylorGreenVortexCoeffs { velocity 1; wavelength 0.01; } }
 #pragma once
 
-#include "slides/carrier/carrier_field.h"
+#include "slides/carrier/unsteady_analytic_carrier.h"
 
 namespace slides {
 
-class TaylorGreenVortex final : public CarrierField {
+class TaylorGreenVortex final : public UnsteadyAnalyticCarrier {
 public:
     /// velocity U [m/s], wavelength L [m], kinematic viscosity ν [m²/s], gas temperature [K].
     TaylorGreenVortex(double velocity, double wavelength, double viscosity, double temperature);
 
     void sample(std::span<const Vec3> points, double time, CarrierNeeds needs,
                 CarrierSample& out) const override;
-    bool steady() const override { return false; }
-    CarrierNeeds provides() const override {
-        return {.velocityGradient = true, .temperature = true, .timeDerivative = true};
-    }
     std::string describe() const override;
 
     /// U(x, t) [m/s].
@@ -32,7 +28,7 @@ public:
     Vec3 kinematicPressureGradient(const Vec3& x, double time) const;
 
 private:
-    double velocity_, wavenumber_, viscosity_, temperature_;
+    double velocity_, wavenumber_, viscosity_;
 };
 
 } // namespace slides
