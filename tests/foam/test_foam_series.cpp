@@ -101,7 +101,9 @@ TEST(FoamSeries, InterpolatesInTimeAtSecondOrderInTheWriteInterval) {
                     levelsPerPeriod, worst, bound, worstRate);
         EXPECT_LE(worst, bound * (1 + 1e-9));
         EXPECT_LE(worstRate, amplitude * std::pow(omega * interval, 3) / interval / 24 * 1.001);
-        if (previous > 0) EXPECT_GE(std::log2(previous / worst), 1.9);
+        if (previous > 0) {
+            EXPECT_GE(std::log2(previous / worst), 1.9);
+        }
         previous = worst;
         fs::remove_all(directory);
     }
@@ -152,7 +154,9 @@ TEST(FoamSeries, ParticleThroughTheSeriesConvergesToTheAnalyticGasAtSecondOrder)
                     levelsPerPeriod, difference, held);
         EXPECT_LE(held, 3u);
         EXPECT_GE(held, 2u);
-        if (previous > 0) EXPECT_GE(std::log2(previous / difference), 1.9);
+        if (previous > 0) {
+            EXPECT_GE(std::log2(previous / difference), 1.9);
+        }
         previous = difference;
         fs::remove_all(directory);
     }

@@ -123,7 +123,12 @@ TEST(MixedSizes, SmallestFollowTheGasLargestFlyOnNothingNonFinite) {
     Scene scene = oneParticle(1e-5, 0.3, 1e-4, 0.2);
     scene.particles.count = 2000;
     scene.nozzle.radius = 5e-3;
-    scene.particles.radius = {RadiusDistributionKind::logNormal, 0, 0, 0, 1e-5, 6.0, 1e-7, 1e-3};
+    RadiusDistribution& radius = scene.particles.radius = RadiusDistribution{};
+    radius.kind = RadiusDistributionKind::logNormal;
+    radius.median = 1e-5;
+    radius.geometricStandardDeviation = 6.0;
+    radius.minimum = 1e-7;
+    radius.maximum = 1e-3;
     Stepper stepper(scene, rotation);
     while (!stepper.finished()) stepper.step();
     const ParticleCloud& cloud = stepper.cloud();

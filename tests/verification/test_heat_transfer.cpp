@@ -110,7 +110,7 @@ TEST_P(LumpedHeating, ArrivalTakesTheTemperatureAtTheTouch) {
     Scene scene = heatedParticleScene();
     const double tau = conductionResponseTime(scene);
     scene.surfaces.push_back(
-        {"sink", Vec3(0.01, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb, ""});
+        {"sink", Vec3(0.01, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb, "", {}});
     const double arrivalTime = (0.01 - 40e-6) / 3;
     scene.time.dt = 1.37 * GetParam() * arrivalTime; // the touch falls inside a step
     scene.time.endTime = 20 * arrivalTime;

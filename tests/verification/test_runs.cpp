@@ -154,7 +154,7 @@ TEST_P(InjectionTiming, ParticlesDueInsideAStepFlyOnlyItsRemainder) {
     const Vec3 stream(10, 0, 0);
     const double standoff = 0.3, radius = scene.particles.radius.value;
     scene.surfaces.push_back(
-        {"target", Vec3(standoff, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb, ""});
+        {"target", Vec3(standoff, 0, 0), Vec3(-1, 0, 0), {}, SurfaceInteraction::absorb, "", {}});
     const test::UniformFlow flow(stream);
     Stepper stepper(scene, flow);
     while (!stepper.finished()) stepper.step();

@@ -26,7 +26,7 @@ Scene plateScene(SurfaceInteraction interaction) {
     scene.deposition.factor = 5000;
     scene.collisions.restitution = {RestitutionModel::constant, 0.5, 3};
     scene.surfaces.push_back(
-        {"plate", Vec3(plateX, 0, 0), Vec3(-1, 0, 0), {160e9, 80e9, 0, 1.1}, interaction, ""});
+        {"plate", Vec3(plateX, 0, 0), Vec3(-1, 0, 0), {160e9, 80e9, 0, 1.1}, interaction, "", {}});
     return scene;
 }
 
