@@ -188,7 +188,7 @@ TEST(AdaptiveRungeKutta, ABatchSubStepsEachParticleAsAloneAndAllEndTogether) {
     const std::vector<double> radius{2e-6, 10e-6, 30e-6, 60e-6}, h{dt, dt, 0.4 * dt, dt};
     std::vector<Vec3> xBatch = x, vBatch = v;
     const AdaptiveSteps steps =
-        advanceAdaptiveBatch(xBatch, vBatch, radius, h, 0.0, tolerance, drag, gravity, flow);
+        advanceAdaptiveBatch({xBatch, vBatch, radius, h}, 0.0, tolerance, drag, gravity, flow);
     EXPECT_GT(steps.attempted, 4 * 4); // it sub-stepped: measured 76 steps, 5 rejected
     long attempted = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {

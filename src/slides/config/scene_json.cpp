@@ -148,7 +148,8 @@ nlohmann::json sceneSettings(const Scene& scene) {
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},
-                        {"integrator", nameOf(integratorNames(), scene.time.integrator)}};
+                        {"integrator", nameOf(integratorNames(), scene.time.integrator)},
+                        {"tolerance", scene.time.tolerance}};
     const CollisionSettings& collisions = scene.collisions;
     settings["collisions"] = {
         {"model", nameOf(collisionModelNames(), collisions.model)},

@@ -628,6 +628,18 @@ void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
     if (!spin && !lift && !physics.spinHistory) automatic.push_back({PhysicsTerm::spin, ""});
 }
 
+/// The unsteady forces left to auto made unavailable: a step other than the Maxey–Riley one
+/// takes the scene's particles.
+void leaveUnsteadyForcesOff(PhysicsSettings& physics, const std::string& because) {
+    constexpr std::array unsteady{PhysicsTerm::history,          PhysicsTerm::addedMass,
+                                  PhysicsTerm::pressureGradient, PhysicsTerm::shearLift,
+                                  PhysicsTerm::spinLift,         PhysicsTerm::spin};
+    for (AutomaticTerm& automatic : physics.automaticTerms)
+        if (automatic.unavailable.empty() &&
+            std::find(unsteady.begin(), unsteady.end(), automatic.term) != unsteady.end())
+            automatic.unavailable = because;
+}
+
 /// physics.electromagnetic; its exact flow replaces the Maxey–Riley step's, so the unsteady
 /// forces stay off (an `auto` one among them is left unavailable).
 void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
@@ -642,13 +654,7 @@ void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
     if (physics.unsteadyForces())
         keys.fail(base + "model", "the Lorentz step does not take the unsteady forces (history, "
                                   "added mass, pressure gradient, lift, spin): set them off");
-    constexpr std::array unsteady{PhysicsTerm::history,          PhysicsTerm::addedMass,
-                                  PhysicsTerm::pressureGradient, PhysicsTerm::shearLift,
-                                  PhysicsTerm::spinLift,         PhysicsTerm::spin};
-    for (AutomaticTerm& automatic : physics.automaticTerms)
-        if (automatic.unavailable.empty() &&
-            std::find(unsteady.begin(), unsteady.end(), automatic.term) != unsteady.end())
-            automatic.unavailable = "not with physics.electromagnetic";
+    leaveUnsteadyForcesOff(physics, "not with physics.electromagnetic");
 }
 
 /// physics.dispersion and physics.heatTransfer with what they need from the other sections.
@@ -975,6 +981,18 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     if (scene.time.dt > scene.time.endTime) keys.fail("time.dt", "is longer than time.endTime");
     scene.time.stopWhenAllDone = keys.boolean("time.stopWhenAllDone");
     scene.time.integrator = *valueNamed(integratorNames(), keys.word("time.integrator"));
+    scene.time.tolerance = keys.scalar("time.tolerance");
+    if (scene.time.tolerance >= 1)
+        keys.fail("time.tolerance", "must be below 1 (a relative error)");
+    if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
+        // The Maxey–Riley step (history window, added mass, ...) advances by whole steps of dt.
+        if (scene.physics.unsteadyForces())
+            keys.fail("time.integrator",
+                      "adaptiveRungeKutta does not take the unsteady forces (history, added "
+                      "mass, pressure gradient, lift, spin), whose step is a whole dt: set them "
+                      "off, or use exponentialMidpoint");
+        leaveUnsteadyForcesOff(scene.physics, "not with time.integrator adaptiveRungeKutta");
+    }
     if (scene.physics.electromagnetic.on() &&
         scene.time.integrator != Integrator::exponentialMidpoint)
         keys.fail("time.integrator", "the Lorentz step (physics.electromagnetic) is an "

@@ -31,8 +31,8 @@ struct ParticleCloud {
     /// A mesh carrier's location (tetrahedron) of each particle (CarrierField::sampleFrom); empty
     /// otherwise.
     std::vector<std::int32_t> carrierLocation;
-    /// Per-particle model state (history memory): stateWidth doubles a particle, moved
-    /// with it; empty when no model keeps state.
+    /// Per-particle model state (history memory, or adaptiveRungeKutta's next trial sub-step):
+    /// stateWidth doubles a particle, moved with it; empty when no model keeps state.
     std::vector<double> modelState;
     std::size_t stateWidth = 0;
     // Model state: empty while its model is off, else one entry per particle (the stepper

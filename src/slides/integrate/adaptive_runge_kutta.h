@@ -15,7 +15,8 @@
 // the global step, so frames and collisions see them all at its end.
 //
 // A step function over one particle's (x, v) and its right-hand side; over a batch in a carrier:
-// integrate/adaptive_runge_kutta_batch.h. The `time.integrator` row is still to come.
+// integrate/adaptive_runge_kutta_batch.h; in a run: `time { integrator adaptiveRungeKutta;
+// tolerance 1e-6; }` (run/stepper.h).
 #pragma once
 
 #include "slides/core/vector.h"
@@ -56,6 +57,14 @@ struct DormandPrince {
 inline double stepFactor(double error) {
     if (!(error > 0)) return 5.0;
     return std::clamp(0.9 * std::pow(error, -0.2), 0.2, 5.0);
+}
+
+/// Whether a sub-step of length step (of the global share length) with this error is kept:
+/// within the tolerance, or too short to shrink further, or not finite — a non-finite state
+/// then reaches the stepper's check, which stops the run naming the particle, instead of
+/// being rejected without end.
+inline bool keepsStep(double error, double step, double length) {
+    return error <= 1 || !std::isfinite(error) || step <= 1e-12 * length;
 }
 
 /// The stage state y + h Σ_{j<s} a_sj k_j (Eq. 4.19).
@@ -111,7 +120,7 @@ int advanceAdaptively(MotionState& y, double t, double h, double& trial, RightHa
         const double size = scaledError(error, scaleOf(y, next));
         ++attempts;
         trial = step * stepFactor(size);
-        if (size <= 1 || step <= 1e-12 * h) { // accepted, or too small to shrink further
+        if (keepsStep(size, step, h)) {
             y = next;
             done += step;
         }

@@ -1,15 +1,15 @@
 #include "slides/integrate/adaptive_runge_kutta_batch.h"
 
 #include "slides/integrate/adaptive_runge_kutta.h"
+#include "slides/integrate/integrator.h"
 
 #include <vector>
 
 namespace slides {
 
-AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> velocity,
-                                   std::span<const double> radius, std::span<const double> h,
-                                   double time, double tolerance, const DragParameters& drag,
-                                   const Vec3& bodyAcceleration, const CarrierField& carrier) {
+AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, double tolerance,
+                                   const DragParameters& drag, const Vec3& bodyAcceleration,
+                                   const CarrierField& carrier) {
     AdaptiveSteps steps;
     struct Particle {
         std::size_t index;
@@ -17,17 +17,23 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
         double done, trial;
         std::array<MotionState, 7> k; ///< the stage slopes
         double step;
+        std::int32_t location; ///< the carrier's cell of the last stage, when it keeps them
     };
+    const auto& h = batch.stepLength;
     std::vector<Particle> active;
-    for (std::size_t i = 0; i < position.size(); ++i) {
+    for (std::size_t i = 0; i < batch.position.size(); ++i) {
         if (!(h[i] > 0)) continue;
         MotionState state;
-        state << position[i], velocity[i];
-        Particle particle{i, state, 0.0, h[i], {}, 0.0};
+        state << batch.position[i], batch.velocity[i];
+        const double trial =
+            !batch.trialStep.empty() && batch.trialStep[i] > 0 ? batch.trialStep[i] : h[i];
+        const std::int32_t location = batch.locations.empty() ? -1 : batch.locations[i];
+        Particle particle{i, state, 0.0, trial, {}, 0.0, location};
         particle.k.fill(MotionState::Zero());
         active.push_back(particle);
     }
     std::vector<Vec3> points;
+    std::vector<std::int32_t> locations;
     std::vector<MotionState> stages;
     CarrierSample gas;
     while (!active.empty()) {
@@ -35,16 +41,21 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
         for (int s = 0; s < DormandPrince::stages; ++s) {
             stages.resize(active.size());
             points.resize(active.size());
+            locations.resize(active.size());
             for (std::size_t n = 0; n < active.size(); ++n) {
                 stages[n] = stageState(active[n].state, active[n].k, s, active[n].step);
                 points[n] = stages[n].head<3>();
+                locations[n] = active[n].location;
             }
-            carrier.sample(points, time, CarrierNeeds{}, gas);
+            carrier.sampleFrom(points, locations, time, CarrierNeeds{}, gas);
             for (std::size_t n = 0; n < active.size(); ++n) {
+                Particle& p = active[n];
+                p.location = locations[n];
+                if (!batch.eddyVelocity.empty()) gas.velocity[n] += batch.eddyVelocity[p.index];
                 const Vec3 v = stages[n].tail<3>();
-                const Vec3 slip = gas.velocity[n] - v;
-                const double tau = dragResponseTime(drag, radius[active[n].index], slip.norm());
-                active[n].k[s] << v, slip / tau + bodyAcceleration;
+                const double tau =
+                    dragResponseTime(drag, batch.radius[p.index], (gas.velocity[n] - v).norm());
+                p.k[s] << v, particleAcceleration(gas.velocity[n], v, tau, bodyAcceleration);
             }
         }
         std::size_t kept = 0;
@@ -52,11 +63,13 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
             Particle& p = active[n];
             MotionState next, error;
             combineStages(p.state, p.k, p.step, next, error);
-            const double size = scaledError(error, errorScale(tolerance, radius[p.index], p.state,
-                                                              next, gas.velocity[n].norm()));
+            const double size =
+                scaledError(error, errorScale(tolerance, batch.radius[p.index], p.state, next,
+                                              gas.velocity[n].norm()));
             ++steps.attempted;
             const double length = h[p.index];
-            if (size <= 1 || p.step <= 1e-12 * length) { // accepted, or too small to shrink
+            const double proposed = p.trial; // before the end of the global step cut it
+            if (keepsStep(size, p.step, length)) {
                 p.state = next;
                 p.done += p.step;
             } else {
@@ -65,10 +78,15 @@ AdaptiveSteps advanceAdaptiveBatch(std::span<Vec3> position, std::span<Vec3> vel
             p.trial = p.step * stepFactor(size);
             if (p.done < length) {
                 active[kept++] = p;
-            } else {
-                position[p.index] = p.state.head<3>();
-                velocity[p.index] = p.state.tail<3>();
+                continue;
             }
+            batch.position[p.index] = p.state.head<3>();
+            batch.velocity[p.index] = p.state.tail<3>();
+            // Its last stage sampled the carrier at the end (Dormand–Prince: c₇ = 1, a₇ = b).
+            if (!batch.locations.empty()) batch.locations[p.index] = p.location;
+            // A last sub-step shortened to end the global step says little of the next one.
+            if (!batch.trialStep.empty())
+                batch.trialStep[p.index] = std::max(p.trial, p.step < proposed ? proposed : 0.0);
         }
         active.resize(kept);
     }

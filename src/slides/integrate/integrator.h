@@ -5,10 +5,12 @@
 // the drag relaxation exactly for u, τ and a frozen over the step (exponential time
 // differencing, Cox & Matthews 2002), so τ ≪ dt stays stable and the velocity relaxes to
 // u + τa instead of oscillating. explicitEuler is kept for comparison; it is unstable for
-// dt > 2τ.
+// dt > 2τ. adaptiveRungeKutta sub-steps each particle within the step by Dormand–Prince steps
+// controlled by time.tolerance (Section 4.2.3, Eq. 4.18–4.29; integrate/adaptive_runge_kutta.h),
+// for gas that varies strongly along a step, where freezing u over it is not accurate enough.
 //
 //     time { integrator exponentialMidpoint; }  // explicitEuler | exponentialEuler |
-//     exponentialMidpoint
+//     exponentialMidpoint | adaptiveRungeKutta (with tolerance 1e-6;)
 //
 // How to add one: an enumerator, its name and order in integratorNames(), and its branch in
 // the stepper (run/stepper.cpp); tests/verification/test_integrators.cpp measures its order.
@@ -22,18 +24,19 @@
 
 namespace slides {
 
-enum class Integrator { explicitEuler, exponentialEuler, exponentialMidpoint };
+enum class Integrator { explicitEuler, exponentialEuler, exponentialMidpoint, adaptiveRungeKutta };
 
 struct IntegratorName {
     Integrator value;
     std::string_view name;
-    int order; ///< design order of accuracy for smooth u(x) and τ(v)
+    int order; ///< design order of accuracy for smooth u(x) and τ(v), fixed steps
 };
 
-constexpr std::array<IntegratorName, 3> integratorNames() {
+constexpr std::array<IntegratorName, 4> integratorNames() {
     return {{{Integrator::explicitEuler, "explicitEuler", 1},
              {Integrator::exponentialEuler, "exponentialEuler", 1},
-             {Integrator::exponentialMidpoint, "exponentialMidpoint", 2}}};
+             {Integrator::exponentialMidpoint, "exponentialMidpoint", 2},
+             {Integrator::adaptiveRungeKutta, "adaptiveRungeKutta", 5}}};
 }
 
 /// Advances (x, v) over h by the exact solution of dv/dt = (u − v)/τ + a, dx/dt = v with
@@ -48,11 +51,17 @@ inline void relaxExactly(Vec3& position, Vec3& velocity, const Vec3& gasVelocity
     velocity = terminal + excess * (1.0 - decayed);
 }
 
+/// dv/dt = (u − v)/τ + a: drag and the body acceleration (the explicit schemes' right-hand side).
+inline Vec3 particleAcceleration(const Vec3& gasVelocity, const Vec3& velocity, double responseTime,
+                                 const Vec3& bodyAcceleration) {
+    return (gasVelocity - velocity) / responseTime + bodyAcceleration;
+}
+
 /// One forward-Euler step of the same equations.
 inline void advanceExplicitly(Vec3& position, Vec3& velocity, const Vec3& gasVelocity,
                               double responseTime, const Vec3& bodyAcceleration, double h) {
     position += velocity * h;
-    velocity += ((gasVelocity - velocity) / responseTime + bodyAcceleration) * h;
+    velocity += particleAcceleration(gasVelocity, velocity, responseTime, bodyAcceleration) * h;
 }
 
 } // namespace slides

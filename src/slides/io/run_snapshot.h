@@ -4,6 +4,7 @@
 #pragma once
 
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/adaptive_steps.h"
 #include "slides/surfaces/arrival.h"
 
 #include <cstdint>
@@ -32,6 +33,8 @@ struct RunSnapshot {
     const std::vector<Arrival>& arrivals; ///< the particles that arrived, in order
     /// Neighbour-list builds of soft-sphere contacts (a cost), when they are on.
     std::optional<long> neighbourListBuilds;
+    /// adaptiveRungeKutta's sub-steps (a cost), when it is the integrator.
+    std::optional<AdaptiveSteps> adaptiveSteps;
 };
 
 } // namespace slides

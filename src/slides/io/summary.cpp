@@ -145,6 +145,9 @@ nlohmann::json runSummary(const RunSnapshot& snapshot, const SummaryInputs& inpu
     // A cost, not a result: a restarted run builds its list once more.
     if (snapshot.neighbourListBuilds)
         summary["performance"]["neighbourListBuilds"] = *snapshot.neighbourListBuilds;
+    if (snapshot.adaptiveSteps)
+        summary["performance"]["adaptiveSteps"] = {{"attempted", snapshot.adaptiveSteps->attempted},
+                                                   {"rejected", snapshot.adaptiveSteps->rejected}};
     if (!inputs.sceneAnalysis.is_null()) summary["sceneAnalysis"] = inputs.sceneAnalysis;
     summary["settings"] = inputs.settings;
     return summary;

@@ -19,7 +19,10 @@ struct GatheredRun {
     std::vector<Arrival> arrivals;
     std::optional<long> neighbourListBuilds;
 
-    RunSnapshot snapshot() const { return {counters, cloud, arrivals, neighbourListBuilds}; }
+    /// (adaptiveRungeKutta is refused in parallel runs: no adaptive steps to gather.)
+    RunSnapshot snapshot() const {
+        return {counters, cloud, arrivals, neighbourListBuilds, std::nullopt};
+    }
 };
 
 /// Every rank's part of the run, on rank 0 (elsewhere the counters only); exits: entries of

@@ -18,7 +18,12 @@ void describeRun(const ResolvedScene& resolved, int threads) {
     std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "
                 "time %.3g s\n",
                 scene.particles.count, meanRadius, scene.particles.density, responseTime);
-    const std::string integrator(nameOf(integratorNames(), scene.time.integrator));
+    std::string integrator(nameOf(integratorNames(), scene.time.integrator));
+    if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
+        char tolerance[40];
+        std::snprintf(tolerance, sizeof tolerance, " (tolerance %g)", scene.time.tolerance);
+        integrator += tolerance;
+    }
     std::fputs(describeAnalysis(resolved.analysis).c_str(), stdout);
     std::printf("  time       dt %.3g s (%s, %.3g response times), end %.3g s, %s, %d thread%s\n",
                 scene.time.dt, resolved.analysis.timeStepGiven ? "given" : "from the analysis",

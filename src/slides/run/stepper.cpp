@@ -2,6 +2,7 @@
 
 #include "slides/core/parallel.h"
 #include "slides/core/particle_order.h"
+#include "slides/integrate/adaptive_runge_kutta_batch.h"
 #include "slides/integrate/relaxation_batch.h"
 #include "slides/physics/body_force.h"
 #include "slides/surfaces/plane_contact.h"
@@ -41,6 +42,12 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
                                    "the scene is read (config/scene_reader.cpp)");
         chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
     }
+    if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
+        if (maxeyRiley_ || chargedMotion_ || exchange)
+            throw std::logic_error("adaptiveRungeKutta with unsteady or electromagnetic forces, or "
+                                   "in a parallel run: refused when the scene is read");
+        cloud_.stateWidth = 1; // each particle's next trial sub-step [s]; 0: its step length
+    }
     if (scene.collisions.model == CollisionModel::impulse)
         collisions_.emplace(scene.collisions, scene.particles);
     if (scene.collisions.model == CollisionModel::softSphere)
@@ -72,7 +79,9 @@ RunCounters Stepper::counters() const {
 RunSnapshot Stepper::snapshot() const {
     std::optional<long> listBuilds;
     if (softSpheres_) listBuilds = softSpheres_->listBuilds();
-    return {counters(), cloud_, arrivals_, listBuilds};
+    std::optional<AdaptiveSteps> adaptiveSteps;
+    if (scene_.time.integrator == Integrator::adaptiveRungeKutta) adaptiveSteps = adaptiveSteps_;
+    return {counters(), cloud_, arrivals_, listBuilds, adaptiveSteps};
 }
 
 void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
@@ -269,12 +278,14 @@ void Stepper::advance(double h) {
         relaxBatchExactly({x, v, x, v, u, v, radius, stepLengths_}, drag_, a, 1.0);
         break;
     case Integrator::exponentialMidpoint: advanceByMidpointRule(h); break;
+    case Integrator::adaptiveRungeKutta: advanceAdaptively(h); break;
     }
 }
 
 bool Stepper::samplesGasForAll() const {
     return maxeyRiley_ || chargedMotion_ || dispersion_.on() || heating_.on() ||
-           scene_.time.integrator != Integrator::exponentialMidpoint;
+           scene_.time.integrator == Integrator::explicitEuler ||
+           scene_.time.integrator == Integrator::exponentialEuler;
 }
 
 void Stepper::advanceByMidpointRule(double h) {
@@ -320,6 +331,39 @@ void Stepper::advanceByMidpointRule(double h) {
             {x, v, x, v, scratch.midpointGas.velocity, scratch.velocity, radius, stepLength}, drag_,
             bodyAcceleration_, 1.0);
     }
+}
+
+void Stepper::advanceAdaptively(double) {
+    // Blocks of the cloud on the threads: a particle's sub-steps do not depend on its block
+    // (integrate/adaptive_runge_kutta_batch.h), so the result is the same at any thread count.
+    // The carrier is sampled at the step's start time (exact for a frozen one). The eddy
+    // fluctuations of this step (stage 2b) are held over it, as the other schemes hold them.
+    const std::size_t count = cloud_.size();
+    if (dispersion_.on()) {
+        eddyVelocities_.assign(count, Vec3::Zero());
+        dispersion_.addTo(eddyVelocities_, 0);
+        if (plane_) plane_->project(eddyVelocities_);
+    }
+    const auto blocks = static_cast<std::ptrdiff_t>((count + midpointBlock - 1) / midpointBlock);
+    long attempted = 0, rejected = 0;
+#pragma omp parallel for schedule(dynamic) reduction(+ : attempted, rejected) if (            \
+        static_cast<std::ptrdiff_t>(count) >= minimumParallelBatch)
+    for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+        const std::size_t first = static_cast<std::size_t>(b) * midpointBlock;
+        const std::size_t n = std::min(midpointBlock, count - first);
+        AdaptiveBatch batch{.position = {cloud_.position.data() + first, n},
+                            .velocity = {cloud_.velocity.data() + first, n},
+                            .radius = {cloud_.radius.data() + first, n},
+                            .stepLength = {stepLengths_.data() + first, n},
+                            .trialStep = {cloud_.modelState.data() + first, n}};
+        if (dispersion_.on()) batch.eddyVelocity = {eddyVelocities_.data() + first, n};
+        if (carrier_.keepsLocations()) batch.locations = {cloud_.carrierLocation.data() + first, n};
+        const AdaptiveSteps steps = advanceAdaptiveBatch(batch, time_, scene_.time.tolerance, drag_,
+                                                         bodyAcceleration_, carrier_);
+        attempted += steps.attempted;
+        rejected += steps.rejected;
+    }
+    adaptiveSteps_ += {attempted, rejected};
 }
 
 void Stepper::flyBallistically(double) {

@@ -20,6 +20,9 @@
 //      with an unsteady term on (history, added mass, pressure gradient, lift, spin) the
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator, on the sample of 2
 //      (with its eddy fluctuations) and a second one at its predicted ends;
+//      adaptiveRungeKutta sub-steps each particle within the step, sampling the carrier stage by
+//      stage for a block of particles (integrate/adaptive_runge_kutta_batch.h), and keeps each
+//      particle's next trial sub-step as its model state between steps;
 //   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
 //      (integrate/particle_heating.h);
 //   3c. with particle collisions on, contacts between particles during the step are resolved
@@ -47,6 +50,7 @@
 #include "slides/collide/soft_sphere_collisions.h"
 #include "slides/config/scene.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/adaptive_steps.h"
 #include "slides/integrate/charged_motion.h"
 #include "slides/integrate/injector_set.h"
 #include "slides/integrate/maxey_riley.h"
@@ -150,9 +154,11 @@ private:
                        CarrierNeeds needs, CarrierSample& out) const;
     /// 3. the exponential midpoint rule, block by block.
     void advanceByMidpointRule(double h);
+    /// 3. the adaptive Dormand–Prince sub-steps, block by block.
+    void advanceAdaptively(double h);
     /// Whether the gas is sampled at the step's start for the whole cloud (stage 2): when
-    /// dispersion, heating or the Maxey–Riley step read it, or the integrator is not the
-    /// exponential midpoint rule, which samples each of its blocks itself.
+    /// dispersion, heating or the Maxey–Riley step read it, or the integrator is an explicit or
+    /// exponential Euler step; the midpoint and adaptive schemes sample their blocks themselves.
     bool samplesGasForAll() const;
 
     const Scene& scene_;
@@ -202,6 +208,8 @@ private:
     static constexpr std::size_t midpointBlock = 1024;
     std::vector<MidpointScratch> midpointScratch_; ///< one a thread
     std::vector<std::uint8_t> fliesOn_; ///< particles whose path meets nothing (meetSurfaces)
+    std::vector<Vec3> eddyVelocities_;  ///< adaptiveRungeKutta with dispersion: each ū'
+    AdaptiveSteps adaptiveSteps_;       ///< adaptiveRungeKutta's sub-steps so far
 };
 
 } // namespace slides
