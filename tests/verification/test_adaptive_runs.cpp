@@ -1,0 +1,191 @@
+// ctest-labels: adaptive
+// Runs with `time.integrator adaptiveRungeKutta` (Section 4.2.3, Eq. 4.18–4.29, Algorithm 2):
+// - a particle falling from rest under gravity and Stokes drag in still gas follows the closed
+//   form v(t) = v_t (1 − e^(−t/τ)) to the tolerance, with global steps of 4 τ (beyond explicit
+//   stability: the step is split into sub-steps), and more closely for a smaller tolerance;
+// - in the sech² jet of Eq. 5.10/5.11 the exponential midpoint rule's paths converge to the
+//   adaptive ones as its step halves, and the adaptive paths do not depend on the step;
+// - a whole run reports its sub-steps in summary.json, and bad tolerances or terms it cannot
+//   take are refused naming file, line and key (exit status 2).
+#include "../support/broken_cases.h"
+#include "../support/case_runs.h"
+#include "../support/test_scenes.h"
+#include "slides/config/scene_reader.h"
+#include "slides/physics/body_force.h"
+#include "slides/run/stepper.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <vector>
+
+namespace slides {
+namespace {
+
+struct Fall {
+    double velocityError, positionError; ///< relative to the closed form's
+    long steps, subSteps;
+};
+
+/// One 50 µm particle (τ = 77 ms) falling from rest in still air for 12 τ, 3 global steps.
+Fall fallFor(double tolerance) {
+    Scene scene = test::singleParticleScene();
+    scene.physics.drag = DragModel::stokes;
+    scene.physics.gravity = Vec3(0, 0, -9.81);
+    scene.time.integrator = Integrator::adaptiveRungeKutta;
+    scene.time.tolerance = tolerance;
+    const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
+                                          scene.fluid.density, scene.fluid.kinematicViscosity);
+    scene.time.dt = 4 * tau;
+    scene.time.endTime = 12 * tau;
+    const test::UniformFlow stillGas(Vec3::Zero());
+    Stepper stepper(scene, stillGas);
+    while (!stepper.finished()) stepper.step();
+    // v(t) = v_t (1 − e^(−t/τ)), x(t) = v_t (t − τ (1 − e^(−t/τ))), v_t = τ g_eff.
+    const Vec3 terminal = tau * bodyAcceleration(scene.physics.gravity, scene.particles.density,
+                                                 scene.fluid.density, scene.physics.buoyancy);
+    const double t = stepper.time();
+    const Vec3 exactV = terminal * -std::expm1(-t / tau);
+    const Vec3 exactX = terminal * (t + tau * std::expm1(-t / tau));
+    const Vec3 x = stepper.cloud().position.at(0), v = stepper.cloud().velocity.at(0);
+    return {(v - exactV).norm() / exactV.norm(), (x - exactX).norm() / exactX.norm(),
+            stepper.steps(), stepper.snapshot().adaptiveSteps->attempted};
+}
+
+TEST(AdaptiveRuns, FallsUnderGravityAndStokesDragAsTheClosedForm) {
+    double previous = INFINITY;
+    for (const double tolerance : {1e-4, 1e-6, 1e-8}) {
+        const Fall fall = fallFor(tolerance);
+        std::printf("TOL %g: velocity error %.2e, position error %.2e, %ld sub-steps in %ld "
+                    "steps\n",
+                    tolerance, fall.velocityError, fall.positionError, fall.subSteps, fall.steps);
+        EXPECT_EQ(fall.steps, 3);
+        // dt = 4 τ is past the explicit stability limit (≈ 3.3 τ): at least 2 sub-steps a step.
+        EXPECT_GE(fall.subSteps, 2 * fall.steps);
+        // Each sub-step's error is held below TOL × the speed (and TOL × the radius for the
+        // position, ≪ the 0.9 m fallen); the relaxation damps earlier errors: the whole fall's
+        // stays below TOL.
+        EXPECT_LT(fall.velocityError, tolerance);
+        EXPECT_LT(fall.positionError, tolerance);
+        EXPECT_LT(fall.velocityError, previous);
+        previous = fall.velocityError;
+    }
+}
+
+struct JetRun {
+    std::map<ParticleId, Vec3> positions;
+    long subSteps = 0;
+};
+
+/// The default spray with 10 µm particles (τ_St = 4.6 ms, about the flight time: they follow
+/// the jet's curvature and shear only in part), 200 of them, 3 ms, no target.
+JetRun runJet(Integrator integrator, double dt) {
+    Scene scene = readScene(test::defaultCase);
+    scene.particles.count = 200;
+    scene.particles.radius.value = 10e-6;
+    scene.injection.mode = InjectionMode::allAtStart;
+    scene.collisions.model = CollisionModel::none;
+    scene.surfaces.clear();
+    scene.time.integrator = integrator;
+    scene.time.tolerance = 1e-11;
+    scene.time.dt = dt;
+    scene.time.endTime = 3e-3;
+    scene.time.stopWhenAllDone = false;
+    const auto carrier = test::carrierOf(scene);
+    Stepper stepper(scene, *carrier);
+    while (!stepper.finished()) stepper.step();
+    JetRun run;
+    const ParticleCloud& cloud = stepper.cloud();
+    for (std::size_t i = 0; i < cloud.size(); ++i) run.positions[cloud.id[i]] = cloud.position[i];
+    if (const auto steps = stepper.snapshot().adaptiveSteps) run.subSteps = steps->attempted;
+    return run;
+}
+
+/// The largest distance between the positions of the particles both runs hold.
+double largestDistance(const JetRun& a, const JetRun& b) {
+    double largest = 0;
+    for (const auto& [id, x] : a.positions)
+        if (b.positions.contains(id)) largest = std::max(largest, (x - b.positions.at(id)).norm());
+    return largest;
+}
+
+TEST(AdaptiveRuns, AgreesWithTheExponentialMidpointRuleInTheAnalyticJet) {
+    // The midpoint rule converges (at order p ≥ 1) to the exact paths as dt halves: the error
+    // left at dt/2 is |x(dt) − x(dt/2)| / (2^p − 1), at most the last correction. The adaptive
+    // run (TOL = 1e-11: the velocity error it allows, TOL × 25 m/s a sub-step, moves a particle
+    // by ~1e-10 m over the 3 ms) at the case's dt of 10 µs lies within that correction of the
+    // fixed-step runs, ever closer to them as their dt halves — and at dt = 1 µs it ends where
+    // it did at 10 µs: its error follows the tolerance, not the step.
+    const JetRun adaptive = runJet(Integrator::adaptiveRungeKutta, 1e-5);
+    const JetRun adaptiveAtSmallStep = runJet(Integrator::adaptiveRungeKutta, 1e-6);
+    std::vector<JetRun> midpoint;
+    for (const double dt : {1e-6, 0.5e-6, 0.25e-6})
+        midpoint.push_back(runJet(Integrator::exponentialMidpoint, dt));
+    ASSERT_GT(adaptive.positions.size(), 100u); // a few leave the domain box
+    for (std::size_t k = 1; k < midpoint.size(); ++k) {
+        const double correction = largestDistance(midpoint[k - 1], midpoint[k]);
+        const double distance = largestDistance(adaptive, midpoint[k]);
+        std::printf("midpoint at dt/%d: correction %.2e m, adaptive to it %.2e m\n", 1 << k,
+                    correction, distance);
+        EXPECT_LT(distance, correction);
+        EXPECT_LT(distance, largestDistance(adaptive, midpoint[k - 1]));
+    }
+    const double stepDependence = largestDistance(adaptive, adaptiveAtSmallStep);
+    std::printf("adaptive at dt 10 µs and 1 µs: %.2e m apart (%ld sub-steps at 10 µs)\n",
+                stepDependence, adaptive.subSteps);
+    EXPECT_LT(stepDependence, 0.01 * largestDistance(midpoint[0], midpoint[1]));
+}
+
+TEST(AdaptiveRuns, ReportItsSubStepsInTheSummary) {
+    test::ScratchDirectory scratch("adaptive-summary");
+    test::writeBrokenCase(scratch, "    integrator      exponentialMidpoint;",
+                          "    integrator      adaptiveRungeKutta;\n    tolerance       1e-5;");
+    std::string text = test::slurp(scratch.path / "constant" / "slidesProperties");
+    text.replace(text.find("count       8000;"), 17, "count       300; ");
+    text.replace(text.find("endTime         0.1;"), 20, "endTime         5e-3;");
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+    ASSERT_EQ(test::runCli(scratch.path.string() + " --quiet", scratch.path / "log"), 0)
+        << test::slurp(scratch.path / "log");
+    const auto summary =
+        nlohmann::json::parse(test::slurp(scratch.path / "slides" / "summary.json"));
+    EXPECT_EQ(summary["settings"]["time"]["integrator"], "adaptiveRungeKutta");
+    EXPECT_EQ(summary["settings"]["time"]["tolerance"], 1e-5);
+    const auto& steps = summary["performance"]["adaptiveSteps"];
+    const long particleSteps = summary["performance"]["particleSteps"];
+    // Every particle step takes one sub-step at least; rejected ones are among those tried.
+    EXPECT_GE(steps["attempted"].get<long>(), particleSteps);
+    EXPECT_LE(steps["rejected"].get<long>(), steps["attempted"].get<long>());
+    EXPECT_GE(steps["rejected"].get<long>(), 0);
+}
+
+class AdaptiveRunRejects : public ::testing::TestWithParam<test::BrokenCase> {};
+
+TEST_P(AdaptiveRunRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
+    test::expectRefused(GetParam());
+}
+
+constexpr const char* integratorLine = "    integrator      exponentialMidpoint;";
+
+const test::BrokenCase brokenAdaptiveCases[] = {
+    {"zeroTolerance", integratorLine,
+     "    integrator      adaptiveRungeKutta;\n    tolerance       0;", 1,
+     "key 'time.tolerance': must be a positive number"},
+    {"toleranceOfOne", integratorLine,
+     "    integrator      adaptiveRungeKutta;\n    tolerance       1;", 1,
+     "key 'time.tolerance': must be below 1"},
+    {"infiniteTolerance", integratorLine,
+     "    integrator      adaptiveRungeKutta;\n    tolerance       1e999;", 1,
+     "key 'time.tolerance': number '1e999' is out of range"},
+    {"adaptiveWithAddedMass", integratorLine,
+     "    integrator      adaptiveRungeKutta;\n}\nphysics { addedMass on; }\ntime {", 0,
+     "key 'time.integrator': adaptiveRungeKutta does not take the unsteady forces"},
+};
+
+INSTANTIATE_TEST_SUITE_P(BrokenCases, AdaptiveRunRejects, ::testing::ValuesIn(brokenAdaptiveCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+} // namespace
+} // namespace slides
