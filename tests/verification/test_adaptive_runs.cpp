@@ -5,6 +5,8 @@
 //   stability: the step is split into sub-steps), and more closely for a smaller tolerance;
 // - in the sech² jet of Eq. 5.10/5.11 the exponential midpoint rule's paths converge to the
 //   adaptive ones as its step halves, and the adaptive paths do not depend on the step;
+// - a run resumed from the state of a step (each particle's trial sub-step kept as model state)
+//   continues bit for bit;
 // - a whole run reports its sub-steps in summary.json, and bad tolerances or terms it cannot
 //   take are refused naming file, line and key (exit status 2).
 #include "../support/broken_cases.h"
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace slides {
@@ -137,6 +140,56 @@ TEST(AdaptiveRuns, AgreesWithTheExponentialMidpointRuleInTheAnalyticJet) {
     std::printf("adaptive at dt 10 µs and 1 µs: %.2e m apart (%ld sub-steps at 10 µs)\n",
                 stepDependence, adaptive.subSteps);
     EXPECT_LT(stepDependence, 0.01 * largestDistance(midpoint[0], midpoint[1]));
+}
+
+/// The default spray with 10 µm particles at dt = 0.1 ms (several sub-steps a step), no
+/// collisions; its target plate stays.
+Scene sprayOfSubSteppingParticles() {
+    Scene scene = readScene(test::defaultCase);
+    scene.particles.count = 200;
+    scene.particles.radius.value = 10e-6;
+    scene.collisions.model = CollisionModel::none;
+    scene.time.integrator = Integrator::adaptiveRungeKutta;
+    scene.time.tolerance = 1e-8;
+    scene.time.dt = 1e-4;
+    scene.time.endTime = 6e-3;
+    return scene;
+}
+
+TEST(AdaptiveRuns, RestartFromTheStateOfAStepContinuesBitForBit) {
+    // Each particle's next trial sub-step is model state of the cloud (checkpointed with it):
+    // a stepper resumed from another's state after 10 steps ends as the uninterrupted one.
+    // Resumed with the trial steps cleared (every particle starting from dt again) it does not:
+    // they carry the step control from one global step to the next.
+    const Scene scene = sprayOfSubSteppingParticles();
+    const auto carrier = test::carrierOf(scene);
+    Stepper whole(scene, *carrier);
+    while (!whole.finished()) whole.step();
+    ASSERT_FALSE(whole.arrivals().empty());
+
+    Stepper first(scene, *carrier);
+    for (int n = 0; n < 10; ++n) first.step();
+    const auto resumed = [&](bool keepTrialSteps) {
+        ParticleCloud cloud = first.cloud();
+        if (!keepTrialSteps) std::fill(cloud.modelState.begin(), cloud.modelState.end(), 0.0);
+        auto second = std::make_unique<Stepper>(scene, *carrier);
+        second->resume(first.counters(), cloud, first.arrivals());
+        while (!second->finished()) second->step();
+        return second;
+    };
+    const auto restarted = resumed(true);
+    ASSERT_EQ(restarted->cloud().size(), whole.cloud().size());
+    ASSERT_EQ(restarted->arrivals().size(), whole.arrivals().size());
+    for (std::size_t i = 0; i < whole.arrivals().size(); ++i) {
+        EXPECT_EQ(restarted->arrivals()[i].id, whole.arrivals()[i].id);
+        EXPECT_EQ(restarted->arrivals()[i].position, whole.arrivals()[i].position) << i;
+        EXPECT_EQ(restarted->arrivals()[i].time, whole.arrivals()[i].time) << i;
+    }
+    const auto cleared = resumed(false);
+    bool differs = cleared->arrivals().size() != whole.arrivals().size();
+    for (std::size_t i = 0; !differs && i < whole.arrivals().size(); ++i)
+        differs = cleared->arrivals()[i].position != whole.arrivals()[i].position;
+    EXPECT_TRUE(differs) << "the trial steps changed nothing: are they kept?";
 }
 
 TEST(AdaptiveRuns, ReportItsSubStepsInTheSummary) {
