@@ -79,6 +79,39 @@ TEST(AdaptiveRuns, FallsUnderGravityAndStokesDragAsTheClosedForm) {
     }
 }
 
+TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
+    // A 50 µm particle (τ = 77 ms, m = 1.3e-9 kg) of charge 1.3e-7 C in E = (1 0 0) V/m,
+    // B = (0 0 0.5) T (|Ω| = qB/m = 50 rad/s, qE/m = 100 m/s²) and a uniform stream under Stokes
+    // drag: integrate/lorentz_flow.h is the exact solution there, which the exponential
+    // midpoint rule takes. Over 10 τ (6 turns), in 10 steps of τ, the adaptive sub-steps agree
+    // with it to TOL = 1e-8 of the particle's path length.
+    Scene scene = test::singleParticleScene();
+    scene.physics.drag = DragModel::stokes;
+    scene.physics.electromagnetic = {ElectromagneticModel::lorentz, Vec3(1, 0, 0), Vec3(0, 0, 0.5),
+                                     ChargeModel::fixed, 1.3e-7};
+    const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
+                                          scene.fluid.density, scene.fluid.kinematicViscosity);
+    scene.time.dt = tau;
+    scene.time.endTime = 10 * tau;
+    scene.time.tolerance = 1e-8;
+    const test::UniformFlow stream(Vec3(0.5, 0.2, 0));
+    const auto runWith = [&](Integrator integrator) {
+        scene.time.integrator = integrator;
+        auto stepper = std::make_unique<Stepper>(scene, stream);
+        while (!stepper->finished()) stepper->step();
+        return stepper;
+    };
+    const auto exact = runWith(Integrator::exponentialMidpoint);
+    const auto adaptive = runWith(Integrator::adaptiveRungeKutta);
+    const Vec3 x = adaptive->cloud().position.at(0), v = adaptive->cloud().velocity.at(0);
+    const Vec3 exactX = exact->cloud().position.at(0), exactV = exact->cloud().velocity.at(0);
+    std::printf("charged: |x| %.3g m, error %.2e m; |v| %.3g m/s, error %.2e m/s; %ld sub-steps\n",
+                exactX.norm(), (x - exactX).norm(), exactV.norm(), (v - exactV).norm(),
+                adaptive->snapshot().adaptiveSteps->attempted);
+    EXPECT_LT((x - exactX).norm(), 1e-8 * exactX.norm());
+    EXPECT_LT((v - exactV).norm(), 1e-8 * exactV.norm());
+}
+
 struct JetRun {
     std::map<ParticleId, Vec3> positions;
     long subSteps = 0;

@@ -994,9 +994,11 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         leaveUnsteadyForcesOff(scene.physics, "not with time.integrator adaptiveRungeKutta");
     }
     if (scene.physics.electromagnetic.on() &&
-        scene.time.integrator != Integrator::exponentialMidpoint)
+        scene.time.integrator != Integrator::exponentialMidpoint &&
+        scene.time.integrator != Integrator::adaptiveRungeKutta)
         keys.fail("time.integrator", "the Lorentz step (physics.electromagnetic) is an "
-                                     "exponential midpoint rule: set exponentialMidpoint");
+                                     "exponential midpoint rule: set exponentialMidpoint (or "
+                                     "adaptiveRungeKutta)");
 
     const Dictionary& surfaces = dictionary.subDict("surfaces");
     for (const auto& name : surfaces.keys()) {

@@ -55,7 +55,12 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
                 const Vec3 v = stages[n].tail<3>();
                 const double tau =
                     dragResponseTime(drag, batch.radius[p.index], (gas.velocity[n] - v).norm());
-                p.k[s] << v, particleAcceleration(gas.velocity[n], v, tau, bodyAcceleration);
+                Vec3 acceleration = particleAcceleration(gas.velocity[n], v, tau, bodyAcceleration);
+                if (!batch.lorentz.empty()) {
+                    const LorentzRates& rates = batch.lorentz[p.index];
+                    acceleration += rates.electricAcceleration + v.cross(rates.gyration);
+                }
+                p.k[s] << v, acceleration;
             }
         }
         std::size_t kept = 0;

@@ -8,8 +8,9 @@
 // Reference: Section 4.2.3, Eq. 4.18–4.29, Algorithm 2. dv/dt = (u(x) + u' − v)/τ + a
 // (integrate/integrator.h particleAcceleration) with τ the drag response time of physics/drag.h
 // at the stage's slip and u' a particle's eddy fluctuation, held over the global step
-// (integrate/turbulent_dispersion.h). The carrier is sampled at one time for the whole batch:
-// exact for a carrier frozen over the step.
+// (integrate/turbulent_dispersion.h); on a charged particle the Lorentz force of Eq. 2.93 adds
+// qE/m + v × qB/m (physics/electromagnetic.h). The carrier is sampled at one time for the whole
+// batch: exact for a carrier frozen over the step.
 //
 //     time { integrator adaptiveRungeKutta; tolerance 1e-6; }
 #pragma once
@@ -18,6 +19,7 @@
 #include "slides/core/vector.h"
 #include "slides/integrate/adaptive_steps.h"
 #include "slides/physics/drag.h"
+#include "slides/physics/electromagnetic.h"
 
 #include <cstdint>
 #include <span>
@@ -34,7 +36,8 @@ struct AdaptiveBatch {
     /// sub-step's proposal), for the particle's next global step. Empty: every particle
     /// starts from h_i.
     std::span<double> trialStep = {};
-    std::span<const Vec3> eddyVelocity = {}; ///< u' [m/s]; empty: none
+    std::span<const Vec3> eddyVelocity = {};    ///< u' [m/s]; empty: none
+    std::span<const LorentzRates> lorentz = {}; ///< qE/m and qB/m; empty: no charges
     /// The carrier's cells, if it keeps them: in, at x; out, at the end of the step.
     std::span<std::int32_t> locations = {};
 };

@@ -1,6 +1,7 @@
 // ChargedMotion: the step loop's use of the Lorentz force (physics/electromagnetic.h) — each
 // particle's charge, set as it enters, and its step by the exact Lorentz–drag flow
-// (integrate/lorentz_flow.h) in place of the drag schemes.
+// (integrate/lorentz_flow.h) in place of the drag schemes; under adaptiveRungeKutta, the Lorentz
+// force in its sub-steps instead (integrate/adaptive_runge_kutta_batch.h).
 //
 // Reference: Eq. 2.93 with the drag of Eq. 3.16. With gas, the exponential midpoint rule of the
 // drag schemes: a half step of the flow with the gas and τ of the step's start predicts the
@@ -43,9 +44,10 @@ public:
     /// Advances every particle i over stepLengths[i] without gas (no drag).
     void fly(ParticleCloud& cloud, const std::vector<double>& stepLengths) const;
 
-private:
+    /// Particle i's qE/m and qB/m (for adaptiveRungeKutta, which takes them in its own steps).
     LorentzRates ratesOf(const ParticleCloud& cloud, std::size_t i) const;
 
+private:
     ElectromagneticSettings fields_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;

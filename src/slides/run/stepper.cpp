@@ -43,9 +43,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
     }
     if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
-        if (maxeyRiley_ || chargedMotion_ || exchange)
-            throw std::logic_error("adaptiveRungeKutta with unsteady or electromagnetic forces, or "
-                                   "in a parallel run: refused when the scene is read");
+        if (maxeyRiley_ || exchange)
+            throw std::logic_error("adaptiveRungeKutta with unsteady forces, or in a parallel "
+                                   "run: refused when the scene is read");
         cloud_.stateWidth = 1; // each particle's next trial sub-step [s]; 0: its step length
     }
     if (scene.collisions.model == CollisionModel::impulse)
@@ -258,7 +258,7 @@ void Stepper::advance(double h) {
         };
         return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
     }
-    if (chargedMotion_) {
+    if (chargedMotion_ && scene_.time.integrator != Integrator::adaptiveRungeKutta) {
         midpointLocations_ = cloud_.carrierLocation;
         const auto sampleMidpoint = [&](const std::vector<Vec3>& points, CarrierSample& out) {
             sampleCarrier(points, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, out);
@@ -283,7 +283,8 @@ void Stepper::advance(double h) {
 }
 
 bool Stepper::samplesGasForAll() const {
-    return maxeyRiley_ || chargedMotion_ || dispersion_.on() || heating_.on() ||
+    const bool adaptive = scene_.time.integrator == Integrator::adaptiveRungeKutta;
+    return maxeyRiley_ || (chargedMotion_ && !adaptive) || dispersion_.on() || heating_.on() ||
            scene_.time.integrator == Integrator::explicitEuler ||
            scene_.time.integrator == Integrator::exponentialEuler;
 }
@@ -337,12 +338,18 @@ void Stepper::advanceAdaptively(double) {
     // Blocks of the cloud on the threads: a particle's sub-steps do not depend on its block
     // (integrate/adaptive_runge_kutta_batch.h), so the result is the same at any thread count.
     // The carrier is sampled at the step's start time (exact for a frozen one). The eddy
-    // fluctuations of this step (stage 2b) are held over it, as the other schemes hold them.
+    // fluctuations of this step (stage 2b) are held over it, as the other schemes hold them; the
+    // Lorentz force of charged particles joins the right-hand side.
     const std::size_t count = cloud_.size();
     if (dispersion_.on()) {
         eddyVelocities_.assign(count, Vec3::Zero());
         dispersion_.addTo(eddyVelocities_, 0);
         if (plane_) plane_->project(eddyVelocities_);
+    }
+    if (chargedMotion_) {
+        lorentzRates_.resize(count);
+        for (std::size_t i = 0; i < count; ++i)
+            lorentzRates_[i] = chargedMotion_->ratesOf(cloud_, i);
     }
     const auto blocks = static_cast<std::ptrdiff_t>((count + midpointBlock - 1) / midpointBlock);
     long attempted = 0, rejected = 0;
@@ -357,6 +364,7 @@ void Stepper::advanceAdaptively(double) {
                             .stepLength = {stepLengths_.data() + first, n},
                             .trialStep = {cloud_.modelState.data() + first, n}};
         if (dispersion_.on()) batch.eddyVelocity = {eddyVelocities_.data() + first, n};
+        if (chargedMotion_) batch.lorentz = {lorentzRates_.data() + first, n};
         if (carrier_.keepsLocations()) batch.locations = {cloud_.carrierLocation.data() + first, n};
         const AdaptiveSteps steps = advanceAdaptiveBatch(batch, time_, scene_.time.tolerance, drag_,
                                                          bodyAcceleration_, carrier_);

@@ -21,8 +21,9 @@
 //      Maxey–Riley step (integrate/maxey_riley.h) replaces the integrator, on the sample of 2
 //      (with its eddy fluctuations) and a second one at its predicted ends;
 //      adaptiveRungeKutta sub-steps each particle within the step, sampling the carrier stage by
-//      stage for a block of particles (integrate/adaptive_runge_kutta_batch.h), and keeps each
-//      particle's next trial sub-step as its model state between steps;
+//      stage for a block of particles (integrate/adaptive_runge_kutta_batch.h; on charged
+//      particles with the Lorentz force), and keeps each particle's next trial sub-step as its
+//      model state between steps;
 //   3b. with heat transfer, each particle's temperature relaxes toward the gas temperature
 //      (integrate/particle_heating.h);
 //   3c. with particle collisions on, contacts between particles during the step are resolved
@@ -207,9 +208,10 @@ private:
     /// Particles a block of the midpoint rule: its scratch stays in the core's cache.
     static constexpr std::size_t midpointBlock = 1024;
     std::vector<MidpointScratch> midpointScratch_; ///< one a thread
-    std::vector<std::uint8_t> fliesOn_; ///< particles whose path meets nothing (meetSurfaces)
-    std::vector<Vec3> eddyVelocities_;  ///< adaptiveRungeKutta with dispersion: each ū'
-    AdaptiveSteps adaptiveSteps_;       ///< adaptiveRungeKutta's sub-steps so far
+    std::vector<std::uint8_t> fliesOn_;      ///< particles whose path meets nothing (meetSurfaces)
+    std::vector<Vec3> eddyVelocities_;       ///< adaptiveRungeKutta with dispersion: each ū'
+    std::vector<LorentzRates> lorentzRates_; ///< adaptiveRungeKutta with charges: qE/m, qB/m
+    AdaptiveSteps adaptiveSteps_;            ///< adaptiveRungeKutta's sub-steps so far
 };
 
 } // namespace slides
