@@ -6,7 +6,8 @@
 // - in the sech² jet of Eq. 5.10/5.11 the exponential midpoint rule's paths converge to the
 //   adaptive ones as its step halves, and the adaptive paths do not depend on the step;
 // - a run resumed from the state of a step (each particle's trial sub-step kept as model state)
-//   continues bit for bit, and one thread or two give the same particles bit for bit;
+//   continues bit for bit, and one thread or two give the same particles bit for bit; a NaN gas
+//   stops the run naming the particle (not an endless loop of rejected sub-steps);
 // - a whole run reports its sub-steps in summary.json, and bad tolerances or terms it cannot
 //   take are refused naming file, line and key (exit status 2).
 #include "../support/broken_cases.h"
@@ -24,6 +25,8 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace slides {
@@ -110,6 +113,23 @@ TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
                 adaptive->snapshot().adaptiveSteps->attempted);
     EXPECT_LT((x - exactX).norm(), 1e-8 * exactX.norm());
     EXPECT_LT((v - exactV).norm(), 1e-8 * exactV.norm());
+}
+
+TEST(AdaptiveRuns, ANonFiniteGasStopsTheRunNamingTheParticle) {
+    // A NaN error estimate is neither within the tolerance nor a reason to shrink the sub-step
+    // without end: the step is kept, and the stepper's check stops the run at the NaN state.
+    Scene scene = test::singleParticleScene();
+    scene.time.integrator = Integrator::adaptiveRungeKutta;
+    const test::UniformFlow brokenGas(Vec3(std::nan(""), 0, 0));
+    Stepper stepper(scene, brokenGas);
+    try {
+        stepper.step();
+        FAIL() << "the NaN gas went unnoticed";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("particle 0 reached a non-finite state"),
+                  std::string::npos)
+            << error.what();
+    }
 }
 
 struct JetRun {
