@@ -298,7 +298,7 @@ void Stepper::advanceByMidpointRule(double h) {
     // A parallel run's carrier samples collectively (run/rank_carrier.h): every rank makes the
     // same calls, so there the cloud is one block on one thread, empty or not.
     const std::size_t count = cloud_.size();
-    const std::size_t block = exchange_ ? std::max<std::size_t>(count, 1) : midpointBlock;
+    const std::size_t block = exchange_ ? std::max<std::size_t>(count, 1) : samplingBlock;
     const auto blocks = static_cast<std::ptrdiff_t>(exchange_ ? 1 : (count + block - 1) / block);
     const bool keepsLocations = carrier_.keepsLocations();
     const bool sampled = samplesGasForAll();
@@ -351,13 +351,13 @@ void Stepper::advanceAdaptively(double) {
         for (std::size_t i = 0; i < count; ++i)
             lorentzRates_[i] = chargedMotion_->ratesOf(cloud_, i);
     }
-    const auto blocks = static_cast<std::ptrdiff_t>((count + midpointBlock - 1) / midpointBlock);
+    const auto blocks = static_cast<std::ptrdiff_t>((count + samplingBlock - 1) / samplingBlock);
     long attempted = 0, rejected = 0;
 #pragma omp parallel for schedule(dynamic) reduction(+ : attempted, rejected) if (            \
         static_cast<std::ptrdiff_t>(count) >= minimumParallelBatch)
     for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-        const std::size_t first = static_cast<std::size_t>(b) * midpointBlock;
-        const std::size_t n = std::min(midpointBlock, count - first);
+        const std::size_t first = static_cast<std::size_t>(b) * samplingBlock;
+        const std::size_t n = std::min(samplingBlock, count - first);
         AdaptiveBatch batch{.position = {cloud_.position.data() + first, n},
                             .velocity = {cloud_.velocity.data() + first, n},
                             .radius = {cloud_.radius.data() + first, n},

@@ -205,8 +205,9 @@ private:
         std::vector<Vec3> velocity;
         std::vector<std::int32_t> locations;
     };
-    /// Particles a block of the midpoint rule: its scratch stays in the core's cache.
-    static constexpr std::size_t midpointBlock = 1024;
+    /// Particles a block of the schemes that sample the carrier themselves (the midpoint rule,
+    /// the adaptive sub-steps): a block's scratch stays in the core's cache.
+    static constexpr std::size_t samplingBlock = 1024;
     std::vector<MidpointScratch> midpointScratch_; ///< one a thread
     std::vector<std::uint8_t> fliesOn_;      ///< particles whose path meets nothing (meetSurfaces)
     std::vector<Vec3> eddyVelocities_;       ///< adaptiveRungeKutta with dispersion: each ū'
