@@ -3,6 +3,7 @@
 // - a particle falling from rest under gravity and Stokes drag in still gas follows the closed
 //   form v(t) = v_t (1 − e^(−t/τ)) to the tolerance, with global steps of 4 τ (beyond explicit
 //   stability: the step is split into sub-steps), and more closely for a smaller tolerance;
+// - in a gas oscillating in time, sampled at each step's middle, the error falls as dt²;
 // - in the sech² jet of Eq. 5.10/5.11 the exponential midpoint rule's paths converge to the
 //   adaptive ones as its step halves, and the adaptive paths do not depend on the step;
 // - a run resumed from the state of a step (each particle's trial sub-step kept as model state)
@@ -13,6 +14,7 @@
 #include "../support/broken_cases.h"
 #include "../support/case_runs.h"
 #include "../support/test_scenes.h"
+#include "slides/carrier/oscillating_gas.h"
 #include "slides/config/scene_reader.h"
 #include "slides/physics/body_force.h"
 #include "slides/run/stepper.h"
@@ -25,6 +27,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -129,6 +132,41 @@ TEST(AdaptiveRuns, ANonFiniteGasStopsTheRunNamingTheParticle) {
         EXPECT_NE(std::string(error.what()).find("particle 0 reached a non-finite state"),
                   std::string::npos)
             << error.what();
+    }
+}
+
+TEST(AdaptiveRuns, InAnOscillatingGasConvergesAtSecondOrderInTheStep) {
+    // u(t) = U sin ωt (carrier/oscillating_gas.h), a 10 µm particle from rest under Stokes drag
+    // (τ = 3.1 ms, ωτ ≈ 1 at 50 Hz): v(t) = A (sin ωt − ωτ cos ωt + ωτ e^(−t/τ)),
+    // A = U / (1 + ω²τ²). The gas is sampled at each step's middle time, so with the sub-steps
+    // resolving the rest (TOL = 1e-10) the error falls as dt² (at the step's start: as dt).
+    // Tolerance ±0.2 on the order, as for the fixed-step integrators.
+    Scene scene = test::singleParticleScene();
+    scene.physics.drag = DragModel::stokes;
+    scene.particles.radius.value = 10e-6;
+    scene.injection.crossSpanSpeed = 0;
+    scene.time.integrator = Integrator::adaptiveRungeKutta;
+    scene.time.tolerance = 1e-10;
+    scene.time.endTime = 0.02;
+    const double amplitude = 1, frequency = 50;
+    const OscillatingGas gas(Vec3(amplitude, 0, 0), frequency, 293.15);
+    const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
+                                          scene.fluid.density, scene.fluid.kinematicViscosity);
+    const double omega = 2 * std::numbers::pi * frequency, t = scene.time.endTime;
+    const double A = amplitude / (1 + omega * omega * tau * tau);
+    const double exact = A * (std::sin(omega * t) - omega * tau * std::cos(omega * t) +
+                              omega * tau * std::exp(-t / tau));
+    std::vector<double> errors;
+    for (const double dt : {1e-3, 0.5e-3, 0.25e-3}) {
+        scene.time.dt = dt;
+        Stepper stepper(scene, gas);
+        while (!stepper.finished()) stepper.step();
+        errors.push_back(std::abs(stepper.cloud().velocity.at(0).x() - exact));
+    }
+    for (std::size_t k = 1; k < errors.size(); ++k) {
+        const double order = std::log2(errors[k - 1] / errors[k]);
+        std::printf("oscillating gas: error %.3e m/s, observed order %.3f\n", errors[k], order);
+        EXPECT_NEAR(order, 2.0, 0.2);
     }
 }
 

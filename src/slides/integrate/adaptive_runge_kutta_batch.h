@@ -10,7 +10,7 @@
 // at the stage's slip and u' a particle's eddy fluctuation, held over the global step
 // (integrate/turbulent_dispersion.h); on a charged particle the Lorentz force of Eq. 2.93 adds
 // qE/m + v × qB/m (physics/electromagnetic.h). The carrier is sampled at one time for the whole
-// batch: exact for a carrier frozen over the step.
+// batch (the stepper takes the global step's middle): exact for a carrier frozen over the step.
 //
 //     time { integrator adaptiveRungeKutta; tolerance 1e-6; }
 #pragma once

@@ -334,10 +334,11 @@ void Stepper::advanceByMidpointRule(double h) {
     }
 }
 
-void Stepper::advanceAdaptively(double) {
+void Stepper::advanceAdaptively(double h) {
     // Blocks of the cloud on the threads: a particle's sub-steps do not depend on its block
     // (integrate/adaptive_runge_kutta_batch.h), so the result is the same at any thread count.
-    // The carrier is sampled at the step's start time (exact for a frozen one). The eddy
+    // The carrier is sampled at the step's middle time: exact for a frozen one, second order in
+    // dt for an unsteady one (as the midpoint rule's second sample). The eddy
     // fluctuations of this step (stage 2b) are held over it, as the other schemes hold them; the
     // Lorentz force of charged particles joins the right-hand side.
     const std::size_t count = cloud_.size();
@@ -366,8 +367,8 @@ void Stepper::advanceAdaptively(double) {
         if (dispersion_.on()) batch.eddyVelocity = {eddyVelocities_.data() + first, n};
         if (chargedMotion_) batch.lorentz = {lorentzRates_.data() + first, n};
         if (carrier_.keepsLocations()) batch.locations = {cloud_.carrierLocation.data() + first, n};
-        const AdaptiveSteps steps = advanceAdaptiveBatch(batch, time_, scene_.time.tolerance, drag_,
-                                                         bodyAcceleration_, carrier_);
+        const AdaptiveSteps steps = advanceAdaptiveBatch(
+            batch, time_ + 0.5 * h, scene_.time.tolerance, drag_, bodyAcceleration_, carrier_);
         attempted += steps.attempted;
         rejected += steps.rejected;
     }

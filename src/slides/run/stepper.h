@@ -155,7 +155,7 @@ private:
                        CarrierNeeds needs, CarrierSample& out) const;
     /// 3. the exponential midpoint rule, block by block.
     void advanceByMidpointRule(double h);
-    /// 3. the adaptive Dormand–Prince sub-steps, block by block.
+    /// 3. the adaptive Dormand–Prince sub-steps, block by block, the carrier at t + h/2.
     void advanceAdaptively(double h);
     /// Whether the gas is sampled at the step's start for the whole cloud (stage 2): when
     /// dispersion, heating or the Maxey–Riley step read it, or the integrator is an explicit or
