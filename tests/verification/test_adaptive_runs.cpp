@@ -4,6 +4,8 @@
 //   form v(t) = v_t (1 − e^(−t/τ)) to the tolerance, with global steps of 4 τ (beyond explicit
 //   stability: the step is split into sub-steps), and more closely for a smaller tolerance;
 // - in a gas oscillating in time, sampled at each step's middle, the error falls as dt²;
+// - a charged particle in E and B fields and a uniform stream follows the exact Lorentz–drag
+//   flow (Eq. 2.93; integrate/lorentz_flow.h) to the tolerance;
 // - in the sech² jet of Eq. 5.10/5.11 the exponential midpoint rule's paths converge to the
 //   adaptive ones as its step halves, and the adaptive paths do not depend on the step;
 // - a run resumed from the state of a step (each particle's trial sub-step kept as model state)
