@@ -349,6 +349,10 @@ const test::BrokenCase brokenAdaptiveCases[] = {
     {"infiniteTolerance", integratorLine,
      "    integrator      adaptiveRungeKutta;\n    tolerance       1e999;", 1,
      "key 'time.tolerance': number '1e999' is out of range"},
+    {"toleranceWithoutAdaptiveSteps", integratorLine,
+     "    integrator      exponentialMidpoint;\n    tolerance       1e-6;", 1,
+     "key 'time.tolerance': controls the steps of adaptiveRungeKutta only, and time.integrator "
+     "is exponentialMidpoint"},
     {"adaptiveWithAddedMass", integratorLine,
      "    integrator      adaptiveRungeKutta;\n}\nphysics { addedMass on; }\ntime {", 0,
      "key 'time.integrator': adaptiveRungeKutta does not take the unsteady forces"},

@@ -391,8 +391,9 @@ std::vector<KeyDeclaration> declareKeys() {
         {"time.integrator", K::word, "-", "exponentialMidpoint", namesOf(integratorNames()),
          R::any, "Time integrator (integrate/integrator.h)."},
         {"time.tolerance", K::scalar, "-", "1e-6", {}, R::positive,
-         "adaptiveRungeKutta only: TOL of the step control (Eq. 4.29), below 1; each sub-step's "
-         "error estimate relative to the particle's radius (position) and speed (velocity)."},
+         "adaptiveRungeKutta only (an error with another integrator): TOL of the step control "
+         "(Eq. 4.29), below 1; each sub-step's error estimate relative to the particle's radius "
+         "(position) and speed (velocity)."},
 
         {"collisions", K::dictionary, "-", "-", {}, R::any,
          "Contacts between particles, and the laws of every impulse contact (collide/)."},

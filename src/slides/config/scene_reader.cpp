@@ -984,6 +984,11 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.time.tolerance = keys.scalar("time.tolerance");
     if (scene.time.tolerance >= 1)
         keys.fail("time.tolerance", "must be below 1 (a relative error)");
+    if (keys.has("time.tolerance") && scene.time.integrator != Integrator::adaptiveRungeKutta)
+        keys.fail("time.tolerance",
+                  "controls the steps of adaptiveRungeKutta only, and "
+                  "time.integrator is " +
+                      std::string(nameOf(integratorNames(), scene.time.integrator)));
     if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
         // The Maxey–Riley step (history window, added mass, ...) advances by whole steps of dt.
         if (scene.physics.unsteadyForces())
