@@ -18,6 +18,7 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
         std::array<MotionState, 7> k; ///< the stage slopes
         double step;
         std::int32_t location; ///< the carrier's cell of the last stage, when it keeps them
+        bool knowsFirstSlope;  ///< k₁ at the state: from the last sub-step's k₇, or a rejection
     };
     const auto& h = batch.stepLength;
     std::vector<Particle> active;
@@ -28,10 +29,11 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
         const double trial =
             !batch.trialStep.empty() && batch.trialStep[i] > 0 ? batch.trialStep[i] : h[i];
         const std::int32_t location = batch.locations.empty() ? -1 : batch.locations[i];
-        Particle particle{i, state, 0.0, trial, {}, 0.0, location};
+        Particle particle{i, state, 0.0, trial, {}, 0.0, location, false};
         particle.k.fill(MotionState::Zero());
         active.push_back(particle);
     }
+    std::vector<std::size_t> members; ///< the active particles a stage samples
     std::vector<Vec3> points;
     std::vector<std::int32_t> locations;
     std::vector<MotionState> stages;
@@ -39,30 +41,36 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
     while (!active.empty()) {
         for (Particle& p : active) p.step = std::min(p.trial, h[p.index] - p.done);
         for (int s = 0; s < DormandPrince::stages; ++s) {
-            stages.resize(active.size());
-            points.resize(active.size());
-            locations.resize(active.size());
-            for (std::size_t n = 0; n < active.size(); ++n) {
-                stages[n] = stageState(active[n].state, active[n].k, s, active[n].step);
-                points[n] = stages[n].head<3>();
-                locations[n] = active[n].location;
+            members.clear();
+            for (std::size_t n = 0; n < active.size(); ++n)
+                if (s > 0 || !active[n].knowsFirstSlope) members.push_back(n);
+            stages.resize(members.size());
+            points.resize(members.size());
+            locations.resize(members.size());
+            for (std::size_t m = 0; m < members.size(); ++m) {
+                const Particle& p = active[members[m]];
+                stages[m] = stageState(p.state, p.k, s, p.step);
+                points[m] = stages[m].head<3>();
+                locations[m] = p.location;
             }
             carrier.sampleFrom(points, locations, time, CarrierNeeds{}, gas);
-            for (std::size_t n = 0; n < active.size(); ++n) {
-                Particle& p = active[n];
-                p.location = locations[n];
-                if (!batch.eddyVelocity.empty()) gas.velocity[n] += batch.eddyVelocity[p.index];
-                const Vec3 v = stages[n].tail<3>();
+            for (std::size_t m = 0; m < members.size(); ++m) {
+                Particle& p = active[members[m]];
+                p.location = locations[m];
+                if (!batch.eddyVelocity.empty()) gas.velocity[m] += batch.eddyVelocity[p.index];
+                const Vec3 v = stages[m].tail<3>();
                 const double tau =
-                    dragResponseTime(drag, batch.radius[p.index], (gas.velocity[n] - v).norm());
-                Vec3 acceleration = particleAcceleration(gas.velocity[n], v, tau, bodyAcceleration);
+                    dragResponseTime(drag, batch.radius[p.index], (gas.velocity[m] - v).norm());
+                Vec3 acceleration = particleAcceleration(gas.velocity[m], v, tau, bodyAcceleration);
                 if (!batch.lorentz.empty()) {
                     const LorentzRates& rates = batch.lorentz[p.index];
                     acceleration += rates.electricAcceleration + v.cross(rates.gyration);
                 }
                 p.k[s] << v, acceleration;
+                p.knowsFirstSlope = true;
             }
         }
+        // The last stage sampled every active particle, in order: gas.velocity[n] is particle n's.
         std::size_t kept = 0;
         for (std::size_t n = 0; n < active.size(); ++n) {
             Particle& p = active[n];
@@ -77,6 +85,7 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
             if (keepsStep(size, p.step, length)) {
                 p.state = next;
                 p.done += p.step;
+                p.k[0] = p.k[6]; // first same as last: c₇ = 1 and a₇ = b, so k₇ = f(next)
             } else {
                 ++steps.rejected;
             }
