@@ -2,8 +2,9 @@
 // in a carrier: each particle sub-steps by its own controlled steps until the end of the global
 // step, so all arrive there together (frames and collisions see them synchronised); stage by
 // stage the carrier is sampled once for every particle still sub-stepping (DESIGN.md: the
-// carrier is called per batch, never per particle). A particle's path does not depend on the
-// other particles of its batch, so a cloud may be split into batches on several threads.
+// carrier is called per batch, never per particle), the first stage only where the last stage
+// of an accepted sub-step has not given it (first same as last). A particle's path does not depend
+// on the other particles of its batch, so a cloud may be split into batches on several threads.
 //
 // Reference: Section 4.2.3, Eq. 4.18–4.29, Algorithm 2. dv/dt = (u(x) + u' − v)/τ + a
 // (integrate/integrator.h particleAcceleration) with τ the drag response time of physics/drag.h
