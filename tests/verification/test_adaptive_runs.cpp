@@ -331,12 +331,6 @@ TEST(AdaptiveRuns, ReportItsSubStepsInTheSummary) {
     EXPECT_GE(steps["rejected"].get<long>(), 0);
 }
 
-class AdaptiveRunRejects : public ::testing::TestWithParam<test::BrokenCase> {};
-
-TEST_P(AdaptiveRunRejects, WithExitStatus2AndOneMessageNamingFileLineAndKey) {
-    test::expectRefused(GetParam());
-}
-
 constexpr const char* integratorLine = "    integrator      exponentialMidpoint;";
 
 const test::BrokenCase brokenAdaptiveCases[] = {
@@ -358,8 +352,9 @@ const test::BrokenCase brokenAdaptiveCases[] = {
      "key 'time.integrator': adaptiveRungeKutta does not take the unsteady forces"},
 };
 
-INSTANTIATE_TEST_SUITE_P(BrokenCases, AdaptiveRunRejects, ::testing::ValuesIn(brokenAdaptiveCases),
-                         [](const auto& info) { return std::string(info.param.name); });
+using test::RefusedCase;
+INSTANTIATE_TEST_SUITE_P(AdaptiveRuns, RefusedCase, ::testing::ValuesIn(brokenAdaptiveCases),
+                         test::brokenCaseName);
 
 } // namespace
 } // namespace slides
