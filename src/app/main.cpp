@@ -6,7 +6,10 @@
 //     slides-track CASE --checkpoint-every 500     # after a crash: slides-track CASE --restart
 //     mpirun -np 4 slides-track CASE -parallel     # a decomposed case, one rank a processor*/
 //     slides-track CASE --check                    # read, analyse, print the decisions only
+//     slides-track --init CASE                     # write a commented
+//     CASE/constant/slidesProperties
 // Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
+#include "slides/config/case_template.h"
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
 #include "slides/core/thread_waits.h"
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
                  "CASE holds constant/slidesProperties; results go to CASE/slides/."};
     slides::RunOptions options;
     bool listKeys = false;
+    bool init = false;
     app.add_option("CASE", options.caseDirectory, "case directory")->check(CLI::ExistingDirectory);
     app.add_option("--output", options.output, "output directory (default CASE/slides)");
     app.add_option("--end-time", options.overrides.endTime, "end time [s], overrides time.endTime");
@@ -57,6 +61,9 @@ int main(int argc, char** argv) {
                  "-parallel under mpirun: the case's processor*/ decomposition, one part a rank");
     app.add_flag("--check", options.check,
                  "read the case and run the scene analysis, print its decisions; write nothing");
+    app.add_flag("--init", init,
+                 "write a commented CASE/constant/slidesProperties for the case (its mesh, "
+                 "patches and inlet) that runs as written; never overwrites one");
     app.add_flag("--list-keys", listKeys,
                  "print the table of slidesProperties keys (markdown) and exit");
     app.set_version_flag("--version", std::string("slides-track ") + SLIDES_VERSION);
@@ -87,6 +94,11 @@ int main(int argc, char** argv) {
         return status;
     };
     try {
+        if (init) {
+            std::cout << "wrote " << slides::writeCaseTemplate(options.caseDirectory).string()
+                      << "\n";
+            return 0;
+        }
         slides::runCase(options, ranks);
         return 0;
     } catch (const slides::InputError& error) {
