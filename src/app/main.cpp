@@ -95,8 +95,8 @@ int main(int argc, char** argv) {
     };
     try {
         if (init) {
-            std::cout << "wrote " << slides::writeCaseTemplate(options.caseDirectory).string()
-                      << "\n";
+            const auto written = slides::writeCaseTemplate(options.caseDirectory);
+            std::cout << "wrote " << written.string() << "\n";
             return 0;
         }
         slides::runCase(options, ranks);

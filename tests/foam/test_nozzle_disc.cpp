@@ -10,7 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <fstream>
 
 namespace slides {
@@ -85,13 +84,7 @@ TEST(NozzleDisc, InsideTheMeshIsAccepted) {
 
 /// The solved planarJet case with its nozzle on the slot's plane at y = 0.02 m, z = 0.5 mm.
 void writePlanarCase(const fs::path& directory, const std::string& radius) {
-    const fs::path run = fs::path(SLIDES_FOAM_RUNS_DIR) / "planarJet";
-    fs::copy(run / "constant", directory / "constant", fs::copy_options::recursive);
-    for (const auto& entry : fs::directory_iterator(run))
-        if (entry.is_directory() && std::isdigit(entry.path().filename().string()[0]) &&
-            entry.path().filename() != "0")
-            fs::copy(entry.path(), directory / entry.path().filename(),
-                     fs::copy_options::recursive);
+    test::copySolvedRun("planarJet", directory);
     writeDictionary(directory, "(0.01 0.02 0.0005)", radius);
 }
 

@@ -1,6 +1,7 @@
 // Running the command line on cases in tests: the default case, scratch directories and files.
 #pragma once
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +34,21 @@ struct ScratchDirectory {
     }
     ~ScratchDirectory() { std::filesystem::remove_all(path); }
 };
+
+/// Copies a solved OpenFOAM run (SLIDES_FOAM_RUNS_DIR/<run>) to directory: its constant/ and
+/// its time directories after 0.
+inline void copySolvedRun(const std::string& run, const std::filesystem::path& directory) {
+    namespace fs = std::filesystem;
+    const fs::path solved = fs::path(SLIDES_FOAM_RUNS_DIR) / run;
+    fs::copy(solved / "constant", directory / "constant",
+             fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    for (const auto& entry : fs::directory_iterator(solved)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_directory() && std::isdigit(static_cast<unsigned char>(name[0])) &&
+            name != "0")
+            fs::copy(entry.path(), directory / name, fs::copy_options::recursive);
+    }
+}
 
 /// Runs `slides-track arguments`, output to log; returns the exit status (−1: killed).
 inline int runCli(const std::string& arguments, const std::filesystem::path& log) {
