@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
 
 namespace slides {
 namespace {
@@ -113,17 +115,27 @@ INSTANTIATE_TEST_SUITE_P(ShippedRuns, CaseTemplateOfSolvedRun,
                                            SolvedRun{"planarJet", "slot", false, 0.5e-3}),
                          [](const auto& info) { return std::string(info.param.run); });
 
-TEST(CaseTemplate, WedgePlateBecomesItsPlane) {
+TEST(CaseTemplate, OnAWedgeOnlyAWallAcrossTheAxisBecomesAPlane) {
+    // The plate x = 0.06 m is a plane of the swept region; the cylinder r = 0.04 m (`outer`,
+    // made a wall here) is one plane in the wedge but not about the axis: it stays an exit.
     test::ScratchDirectory scratch("caseTemplate-plate");
     test::copySolvedRun("impingingJet", scratch.path);
     fs::remove(scratch.path / "constant" / "slidesProperties");
+    const fs::path boundary = scratch.path / "constant" / "polyMesh" / "boundary";
+    std::string patches = test::slurp(boundary);
+    patches = std::regex_replace(patches, std::regex(R"((outer\s*\{\s*type\s+)patch;)"), "$1wall;");
+    std::ofstream(boundary) << patches;
     ASSERT_EQ(test::runCli("--init " + scratch.path.string(), scratch.path / "log"), 0);
-    const Dictionary plate = Dictionary::parseFile(scratch.path / "constant" / "slidesProperties")
-                                 .subDict("surfaces")
-                                 .subDict("plate");
+    const std::string text = test::slurp(scratch.path / "constant" / "slidesProperties");
+    const Dictionary surfaces =
+        Dictionary::parseFile(scratch.path / "constant" / "slidesProperties").subDict("surfaces");
+    const Dictionary& plate = surfaces.subDict("plate");
     EXPECT_EQ(plate.word("type"), "plane");
     EXPECT_NEAR(plate.vector("point").x(), 0.06, 1e-12) << "the plate of the blockMeshDict";
     EXPECT_NEAR(plate.vector("normal").x(), -1, 1e-12) << "into the gas";
+    EXPECT_FALSE(surfaces.has("outer"));
+    EXPECT_NE(text.find("// outer (wall): a wall of a wedge or 2-D mesh that is not one plane"),
+              std::string::npos);
 }
 
 /// The shipped cases without a mesh: the analytic jet's template.

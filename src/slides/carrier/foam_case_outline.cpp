@@ -116,6 +116,9 @@ FoamCaseOutline outlineFoamCase(const std::filesystem::path& caseDirectory) {
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const FoamPatch& patch = mesh.patches[p];
         outline.patches.push_back(outlinePatch(mesh, patch));
+        if (carrier.wedge()) // a plane of the wedge is one of the swept region only across its axis
+            outline.patches.back().planar &=
+                std::abs(outline.patches.back().inwardNormal.dot(carrier.wedge()->axis)) > 1 - 1e-9;
         if (patch.type != PatchType::patch || patch.size == 0) continue;
         const std::pair<bool, double> rank{nameSaysInlet(patch.name),
                                            inflowSpeed(mesh, patch, velocity.patchValues[p])};

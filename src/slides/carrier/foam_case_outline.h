@@ -6,7 +6,7 @@
 // entraining sides). On a wedge the nozzle disc sits on the axis and reaches the patch's
 // largest radius; on a 2-D mesh it is the slot's line in the plane (carrier/foam_carrier.h).
 //
-//     const FoamCaseOutline outline = outlineFoamCase("foamCases/impingingJet");
+//     const FoamCaseOutline outline = outlineFoamCase(solvedImpingingJet);
 //     outline.inlet->name == "nozzle"; outline.inlet->radius == 2e-3;
 #pragma once
 
@@ -27,7 +27,7 @@ struct FoamPatchOutline {
     PatchType type = PatchType::patch;
     Vec3 centroid = Vec3::Zero();      ///< area-weighted face centre
     Vec3 inwardNormal = Vec3::UnitX(); ///< unit, into the mesh (the mean of the faces')
-    bool planar = false;               ///< every face's normal along inwardNormal
+    bool planar = false; ///< every face's normal along inwardNormal (on a wedge: its axis)
 };
 
 /// The disc through which particles enter: on the inlet patch, along its inward normal.

@@ -257,8 +257,8 @@ void surfaces(TemplateText& text, const FoamCaseOutline& outline) {
             text.defaultEntry("interaction");
             text.close();
         } else if (patch.type == PatchType::wall) {
-            text.note(name + "a wall of a wedge or 2-D mesh that is not one plane (a patch "
-                             "surface needs a 3-D mesh): particles reaching it escape.");
+            text.note(name + "a wall of a wedge or 2-D mesh that is not one plane (across a "
+                             "wedge's axis; a patch surface needs a 3-D mesh): an exit.");
         } else if (isInlet) {
             text.note(name + "the inlet the particles enter through; an exit like the others.");
         } else if (patch.type == PatchType::wedge) {
