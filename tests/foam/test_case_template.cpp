@@ -4,6 +4,7 @@
 // runs as written, for every shipped case: the solved OpenFOAM runs (wedge, 3-D and 2-D meshes)
 // get their patch names, their mesh's box (1 % of its largest extent wider on every side) as
 // the domain and their inlet as the injection; the cases without a mesh get the analytic jet.
+// Every key written is declared in the key table and carries its doc line as a comment.
 // Each written case passes --check and runs; numbers are checked against the mesh's points
 // (9 significant digits written: relative tolerance 1e-8). A case dictionary that exists is
 // never overwritten.
@@ -11,6 +12,7 @@
 
 #include "slides/carrier/foam_mesh.h"
 #include "slides/config/dictionary.h"
+#include "slides/config/scene_keys.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,11 +20,35 @@
 #include <cmath>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 namespace slides {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// The words of every `//` comment of text, one space apart.
+std::string commentWords(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line, words;
+    while (std::getline(lines, line)) {
+        const auto at = line.find_first_not_of(' ');
+        if (at != std::string::npos && line.compare(at, 3, "// ") == 0)
+            words += line.substr(at + 3) + " ";
+    }
+    return words;
+}
+
+/// Every key of dictionary is declared in the key table and written under its doc line.
+void expectEveryKeyDocumented(const Dictionary& dictionary, const std::string& comments) {
+    for (const std::string& key : dictionary.keys()) {
+        const std::string path = dictionary.keyPath(key);
+        const KeyDeclaration* declaration = findSceneKey(path);
+        ASSERT_NE(declaration, nullptr) << path;
+        EXPECT_NE(comments.find(declaration->doc), std::string::npos) << path;
+        if (dictionary.isDict(key)) expectEveryKeyDocumented(dictionary.subDict(key), comments);
+    }
+}
 
 /// Writes the template into scratch's case, then checks it (--check) and runs it briefly; both
 /// must succeed and the short run inject particles. Returns the written dictionary.
@@ -39,7 +65,9 @@ Dictionary initCheckAndRun(const test::ScratchDirectory& scratch) {
     const auto summary =
         nlohmann::json::parse(test::slurp(scratch.path / "slides" / "summary.json"));
     EXPECT_GT(summary["particles"]["injected"].get<long>(), 0);
-    return Dictionary::parseFile(file);
+    Dictionary dictionary = Dictionary::parseFile(file);
+    expectEveryKeyDocumented(dictionary, commentWords(test::slurp(file)));
+    return dictionary;
 }
 
 struct SolvedRun {

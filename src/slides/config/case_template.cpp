@@ -1,8 +1,8 @@
 #include "slides/config/case_template.h"
 
 #include "slides/carrier/foam_case_outline.h"
+#include "slides/config/commented_dictionary.h"
 #include "slides/config/dictionary.h"
-#include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
 #include "slides/io/atomic_file.h"
 
@@ -10,7 +10,6 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-#include <stdexcept>
 
 namespace slides {
 
@@ -52,87 +51,6 @@ std::string vectorText(const Vec3& v, double scale = 1) {
     return text.str();
 }
 
-/// Writes the dictionary, each key under its declaration's comment (config/scene_keys.h).
-class TemplateText {
-public:
-    /// A sub-dictionary of the one open (the top level first), under its comment.
-    void open(const std::string& key) {
-        describe(keyPath(key));
-        line(key);
-        line("{");
-        path_.push_back(key);
-    }
-    void close() {
-        path_.pop_back();
-        line("}");
-        if (path_.empty()) out_ << "\n";
-    }
-    /// key value; under its comment, with an optional note after the value.
-    void entry(const std::string& key, const std::string& value, const std::string& note = "") {
-        describe(keyPath(key));
-        std::string text = key;
-        text.resize(std::max<std::size_t>(text.size() + 1, 20), ' ');
-        text += value + ";";
-        if (!note.empty()) text += "  // " + note;
-        line(text);
-    }
-    /// key with its table default, under its comment.
-    void defaultEntry(const std::string& key) { entry(key, declaration(keyPath(key)).fallback); }
-    /// An optional key, commented out, with the example value given.
-    void commentedEntry(const std::string& key, const std::string& example) {
-        describe(keyPath(key));
-        line("// " + key + " " + example + ";");
-    }
-    void note(const std::string& text) { wrapped("// ", text); }
-    void raw(const std::string& text) { out_ << text; }
-    std::string text() const { return out_.str(); }
-
-private:
-    std::string keyPath(const std::string& key) const {
-        std::string path;
-        for (const auto& name : path_) path += name + ".";
-        return path + key;
-    }
-    static const KeyDeclaration& declaration(const std::string& path) {
-        const KeyDeclaration* key = findSceneKey(path);
-        if (!key) throw std::logic_error("case template: key '" + path + "' is not declared");
-        return *key;
-    }
-    /// The declaration's doc line, unit, allowed names and default, as a comment.
-    void describe(const std::string& path) {
-        const KeyDeclaration& key = declaration(path);
-        std::string text = key.doc;
-        if (key.unit != "-") text += " [" + key.unit + "]";
-        if (!key.allowed.empty()) {
-            text += " One of:";
-            for (const auto& name : key.allowed) text += " " + name;
-            text += ".";
-        }
-        if (!key.required() && !key.optional() && key.kind != KeyKind::dictionary)
-            text += " Default: " + key.fallback + ".";
-        wrapped("// ", text);
-    }
-    void wrapped(const std::string& prefix, const std::string& text) {
-        const std::size_t width = 96 - 4 * path_.size() - prefix.size();
-        std::istringstream words(text);
-        std::string word, current;
-        while (words >> word) {
-            if (!current.empty() && current.size() + 1 + word.size() > width) {
-                line(prefix + current);
-                current.clear();
-            }
-            current += (current.empty() ? "" : " ") + word;
-        }
-        if (!current.empty()) line(prefix + current);
-    }
-    void line(const std::string& text) {
-        out_ << std::string(4 * path_.size(), ' ') << text << "\n";
-    }
-
-    std::ostringstream out_;
-    std::vector<std::string> path_;
-};
-
 std::string header(const std::string& about) {
     return "/*--------------------------------*- C++ -*----------------------------------*\\\n"
            "  SLIDES-track case dictionary written by `slides-track --init`: " +
@@ -150,14 +68,15 @@ std::string header(const std::string& about) {
 const char* footer =
     "// ************************************************************************* //\n";
 
-void fluid(TemplateText& text, double kinematicViscosity, const std::string& viscositySource) {
+void fluid(CommentedDictionary& text, double kinematicViscosity,
+           const std::string& viscositySource) {
     text.open("fluid");
     text.entry("density", number(airDensity), "air at 20 °C");
     text.entry("kinematicViscosity", number(kinematicViscosity), viscositySource);
     text.close();
 }
 
-void particles(TemplateText& text, bool countHere) {
+void particles(CommentedDictionary& text, bool countHere) {
     text.open("particles");
     if (countHere) text.entry("count", std::to_string(particleCount));
     text.entry("density", number(particleDensity),
@@ -170,7 +89,7 @@ void particles(TemplateText& text, bool countHere) {
 }
 
 /// The nozzle disc and its injection at rate, over injectionTime; lengthScale: the scene's size.
-void nozzleInjection(TemplateText& text, const Vec3& centre, const Vec3& axis, double radius,
+void nozzleInjection(CommentedDictionary& text, const Vec3& centre, const Vec3& axis, double radius,
                      const Vec3& crossSpanDirection, double injectionTime, double lengthScale,
                      const std::string& where) {
     text.open("nozzle");
@@ -189,14 +108,15 @@ void nozzleInjection(TemplateText& text, const Vec3& centre, const Vec3& axis, d
     text.close();
 }
 
-void physics(TemplateText& text, const std::string& gravity, const std::string& gravityNote) {
+void physics(CommentedDictionary& text, const std::string& gravity,
+             const std::string& gravityNote) {
     text.open("physics");
     text.defaultEntry("drag");
     text.entry("gravity", gravity, gravityNote);
     text.close();
 }
 
-void time(TemplateText& text, double endTime) {
+void time(CommentedDictionary& text, double endTime) {
     text.open("time");
     text.commentedEntry("dt", "1e-5");
     text.entry("endTime", number(endTime));
@@ -205,7 +125,7 @@ void time(TemplateText& text, double endTime) {
     text.close();
 }
 
-void domain(TemplateText& text, const Box& box, const std::string& about) {
+void domain(CommentedDictionary& text, const Box& box, const std::string& about) {
     text.open("domain");
     text.note(about);
     text.entry("min", vectorText(box.min));
@@ -213,7 +133,7 @@ void domain(TemplateText& text, const Box& box, const std::string& about) {
     text.close();
 }
 
-void output(TemplateText& text, double endTime) {
+void output(CommentedDictionary& text, double endTime) {
     text.open("output");
     text.entry("interval", number(endTime / framesPerRun),
                std::to_string(framesPerRun) + " frames to time.endTime");
@@ -232,7 +152,7 @@ std::pair<double, std::string> caseViscosity(const fs::path& caseDirectory) {
 }
 
 /// A surface for each wall patch the run can meet; the other patches as comments.
-void surfaces(TemplateText& text, const FoamCaseOutline& outline) {
+void surfaces(CommentedDictionary& text, const FoamCaseOutline& outline) {
     const double lengthScale = (outline.bounds.max - outline.bounds.min).maxCoeff();
     text.open("surfaces");
     text.note("Every patch of constant/polyMesh/boundary. A particle leaving the mesh through a "
@@ -279,7 +199,7 @@ std::string foamTemplate(const fs::path& caseDirectory) {
     const FoamCaseOutline outline = outlineFoamCase(caseDirectory);
     const char* shapes[] = {"3-D", "axisymmetric wedge", "2-D"};
     const std::string shape = shapes[static_cast<int>(outline.shape)];
-    TemplateText text;
+    CommentedDictionary text;
     text.raw(header("the OpenFOAM case's\n  " + shape + " mesh and its U at time " + outline.time +
                     ", " + std::to_string(outline.patches.size()) + " patches."));
 
@@ -357,7 +277,7 @@ std::string foamTemplate(const fs::path& caseDirectory) {
 /// The analytic sech² jet of foamCases/analyticSpray: a round nozzle of 2 mm at the origin
 /// blowing at 25 m/s along x onto a plate 60 mm away.
 std::string analyticTemplate() {
-    TemplateText text;
+    CommentedDictionary text;
     text.raw(header("no OpenFOAM mesh\n  here, so the carrier is the analytic sech² jet "
                     "(Eq. 5.10/5.11) of foamCases/analyticSpray."));
     fluid(text, airKinematicViscosity, "air at 20 °C");
