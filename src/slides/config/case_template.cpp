@@ -195,36 +195,13 @@ void surfaces(CommentedDictionary& text, const FoamCaseOutline& outline) {
     text.close();
 }
 
-std::string foamTemplate(const fs::path& caseDirectory) {
-    const FoamCaseOutline outline = outlineFoamCase(caseDirectory);
-    const char* shapes[] = {"3-D", "axisymmetric wedge", "2-D"};
-    const std::string shape = shapes[static_cast<int>(outline.shape)];
-    CommentedDictionary text;
-    text.raw(header("the OpenFOAM case's\n  " + shape + " mesh and its U at time " + outline.time +
-                    ", " + std::to_string(outline.patches.size()) + " patches."));
-
-    const auto [viscosity, viscositySource] = caseViscosity(caseDirectory);
-    fluid(text, viscosity, viscositySource);
-
-    text.open("carrier");
-    text.entry("type", "foamField");
-    text.open("foamFieldCoeffs");
-    text.entry("time", "latestTime", "now " + outline.time);
-    text.defaultEntry("interpolation");
-    text.close();
-    text.close();
-
+/// The particles entering through the inlet: a patch injector on a 3-D mesh, a nozzle disc on
+/// a wedge or 2-D mesh (carrier/foam_case_outline.h); without an inlet, a small disc at the
+/// centre of the box. speed: the inflow's [m/s].
+void inletInjection(CommentedDictionary& text, const FoamCaseOutline& outline, double injectionTime,
+                    double speed) {
     const Vec3 extent = outline.bounds.max - outline.bounds.min;
-    const double speed = outline.inlet && outline.inlet->inflowSpeed > 0
-                             ? outline.inlet->inflowSpeed
-                             : std::max(outline.largestSpeed, 1.0);
-    const double transit = extent.maxCoeff() / speed;
-    const double injectionTime = rounded(transitsInjected * transit);
-    const double endTime = rounded(transitsTracked * transit);
-
-    const bool patchInjector = outline.inlet && outline.shape == FoamMeshShape::threeDimensional;
-    particles(text, !patchInjector);
-    if (patchInjector) {
+    if (outline.inlet && outline.shape == FoamMeshShape::threeDimensional) {
         const std::string& inlet = outline.inlet->name;
         text.open("injectors");
         text.note("Particles enter through the inlet patch '" + inlet + "' (mean inflow " +
@@ -255,7 +232,38 @@ std::string foamTemplate(const fs::path& caseDirectory) {
                         "No inlet patch found (none named inlet, none with inflow): a small "
                         "disc at the centre of the mesh's box. Move it to where particles enter.");
     }
+}
 
+std::string foamTemplate(const fs::path& caseDirectory) {
+    const FoamCaseOutline outline = outlineFoamCase(caseDirectory);
+    const char* shapes[] = {"3-D", "axisymmetric wedge", "2-D"};
+    const std::string shape = shapes[static_cast<int>(outline.shape)];
+    CommentedDictionary text;
+    text.raw(header("the OpenFOAM case's\n  " + shape + " mesh and its U at time " + outline.time +
+                    ", " + std::to_string(outline.patches.size()) + " patches."));
+
+    const auto [viscosity, viscositySource] = caseViscosity(caseDirectory);
+    fluid(text, viscosity, viscositySource);
+
+    text.open("carrier");
+    text.entry("type", "foamField");
+    text.open("foamFieldCoeffs");
+    text.entry("time", "latestTime", "now " + outline.time);
+    text.defaultEntry("interpolation");
+    text.close();
+    text.close();
+
+    const Vec3 extent = outline.bounds.max - outline.bounds.min;
+    const double speed = outline.inlet && outline.inlet->inflowSpeed > 0
+                             ? outline.inlet->inflowSpeed
+                             : std::max(outline.largestSpeed, 1.0);
+    const double transit = extent.maxCoeff() / speed;
+    const double injectionTime = rounded(transitsInjected * transit);
+    const double endTime = rounded(transitsTracked * transit);
+
+    const bool patchInjector = outline.inlet && outline.shape == FoamMeshShape::threeDimensional;
+    particles(text, !patchInjector);
+    inletInjection(text, outline, injectionTime, speed);
     physics(text, "(0 0 0)", "the case's down, e.g. (0 -9.81 0)");
     time(text, endTime);
     surfaces(text, outline);
