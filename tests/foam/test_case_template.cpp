@@ -208,6 +208,21 @@ TEST(CaseTemplate, AnExistingDictionaryIsNeverOverwritten) {
     EXPECT_EQ(test::slurp(file), own) << "the file must be unchanged";
 }
 
+TEST(CaseTemplate, AnOpenFoamCaseWithoutItsMeshIsRefused) {
+    // foamCases/planarJet as shipped: blockMeshDict and controlDict, no mesh or solution yet.
+    test::ScratchDirectory scratch("caseTemplate-unsolved");
+    fs::copy(test::sourceDir / "foamCases" / "planarJet", scratch.path,
+             fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    const fs::path log = scratch.path / "log";
+    EXPECT_EQ(test::runCli("--init " + scratch.path.string(), log), 2);
+    EXPECT_NE(test::slurp(log).find((scratch.path / "constant" / "polyMesh").string() +
+                                    ": missing: an OpenFOAM case (system/controlDict) without "
+                                    "its mesh; run its Allrun"),
+              std::string::npos)
+        << test::slurp(log);
+    EXPECT_FALSE(fs::exists(scratch.path / "constant" / "slidesProperties"));
+}
+
 TEST(CaseTemplate, ACaseThatIsNotADirectoryIsRefused) {
     test::ScratchDirectory scratch("caseTemplate-notDirectory");
     const fs::path notADirectory = scratch.path / "constant" / "file";

@@ -326,7 +326,12 @@ std::string analyticTemplate() {
 } // namespace
 
 std::string caseTemplate(const fs::path& caseDirectory) {
-    if (fs::exists(caseDirectory / "constant" / "polyMesh")) return foamTemplate(caseDirectory);
+    const fs::path mesh = caseDirectory / "constant" / "polyMesh";
+    if (fs::exists(mesh)) return foamTemplate(caseDirectory);
+    if (fs::exists(caseDirectory / "system" / "controlDict"))
+        throw InputError(mesh.string(), 0, "",
+                         "missing: an OpenFOAM case (system/controlDict) without its mesh; run "
+                         "its Allrun (blockMesh, the solver) first, then --init");
     return analyticTemplate();
 }
 
