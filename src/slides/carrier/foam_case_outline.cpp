@@ -18,7 +18,10 @@ bool nameSaysInlet(std::string name) {
     return name.find("inlet") != std::string::npos;
 }
 
-FoamPatchOutline outlinePatch(const FoamMesh& mesh, const FoamPatch& patch) {
+/// The patch's centre, inward normal and whether it is a plane of the region the carrier covers:
+/// on a wedge only a plane across the axis is one (swept about it), its point then on the axis.
+FoamPatchOutline outlinePatch(const FoamMesh& mesh, const FoamPatch& patch,
+                              const std::optional<WedgeFrame>& wedge) {
     FoamPatchOutline outline{.name = patch.name, .type = patch.type};
     Vec3 area = Vec3::Zero(), weightedCentre = Vec3::Zero();
     double areaMagnitude = 0;
@@ -29,12 +32,18 @@ FoamPatchOutline outlinePatch(const FoamMesh& mesh, const FoamPatch& patch) {
         areaMagnitude += a;
     }
     if (areaMagnitude <= 0 || area.norm() <= 0) return outline; // no faces (a wedge's axis)
-    outline.centroid = weightedCentre / areaMagnitude;
+    outline.point = weightedCentre / areaMagnitude;
     outline.inwardNormal = -area.normalized();
     outline.planar =
         std::ranges::all_of(std::views::iota(patch.start, patch.start + patch.size), [&](int f) {
             return -mesh.faceAreas[f].normalized().dot(outline.inwardNormal) > 1 - 1e-9;
         });
+    if (wedge) {
+        outline.planar &= std::abs(outline.inwardNormal.dot(wedge->axis)) > 1 - 1e-9;
+        if (outline.planar)
+            outline.point =
+                wedge->origin + (outline.point - wedge->origin).dot(wedge->axis) * wedge->axis;
+    }
     return outline;
 }
 
@@ -61,10 +70,10 @@ FoamInletOutline inletDisc(const FoamCarrier& carrier, const FoamPatch& patch,
                            const FoamPatchOutline& outline, double speed) {
     const FoamMesh& mesh = carrier.mesh();
     FoamInletOutline inlet{.name = patch.name, .axis = outline.inwardNormal, .inflowSpeed = speed};
-    inlet.centre = outline.centroid;
+    inlet.centre = outline.point;
     inlet.crossSpanDirection = anyPerpendicular(inlet.axis);
     if (const auto& wedge = carrier.wedge()) {
-        const Vec3 offset = outline.centroid - wedge->origin;
+        const Vec3 offset = outline.point - wedge->origin;
         inlet.centre = wedge->origin + offset.dot(wedge->axis) * wedge->axis;
         inlet.crossSpanDirection = wedge->radial;
     } else if (const auto plane = carrier.planeNormal()) {
@@ -115,10 +124,7 @@ FoamCaseOutline outlineFoamCase(const std::filesystem::path& caseDirectory) {
     std::pair<bool, double> best{false, 0.0}; // (named inlet, inflow speed)
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const FoamPatch& patch = mesh.patches[p];
-        outline.patches.push_back(outlinePatch(mesh, patch));
-        if (carrier.wedge()) // a plane of the wedge is one of the swept region only across its axis
-            outline.patches.back().planar &=
-                std::abs(outline.patches.back().inwardNormal.dot(carrier.wedge()->axis)) > 1 - 1e-9;
+        outline.patches.push_back(outlinePatch(mesh, patch, carrier.wedge()));
         if (patch.type != PatchType::patch || patch.size == 0) continue;
         const std::pair<bool, double> rank{nameSaysInlet(patch.name),
                                            inflowSpeed(mesh, patch, velocity.patchValues[p])};

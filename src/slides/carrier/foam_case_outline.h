@@ -25,7 +25,7 @@ enum class FoamMeshShape { threeDimensional, wedge, twoDimensional };
 struct FoamPatchOutline {
     std::string name;
     PatchType type = PatchType::patch;
-    Vec3 centroid = Vec3::Zero();      ///< area-weighted face centre
+    Vec3 point = Vec3::Zero();         ///< area-weighted face centre; a wedge's plane: on the axis
     Vec3 inwardNormal = Vec3::UnitX(); ///< unit, into the mesh (the mean of the faces')
     bool planar = false; ///< every face's normal along inwardNormal (on a wedge: its axis)
 };

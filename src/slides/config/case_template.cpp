@@ -172,7 +172,7 @@ void surfaces(CommentedDictionary& text, const FoamCaseOutline& outline) {
             text.note(name + "met as its plane.");
             text.open(patch.name);
             text.entry("type", "plane");
-            text.entry("point", vectorText(patch.centroid, lengthScale));
+            text.entry("point", vectorText(patch.point, lengthScale));
             text.entry("normal", vectorText(patch.inwardNormal));
             text.defaultEntry("interaction");
             text.close();
