@@ -24,10 +24,11 @@ namespace slides {
 
 /// What a caller needs from a sample; a carrier fills only what is asked for.
 struct CarrierNeeds {
-    bool velocityGradient = false; ///< ∇U: fluid acceleration, lift
-    bool turbulence = false;       ///< k and ε: turbulent eddy sampling
-    bool temperature = false;      ///< T: convective heating
-    bool timeDerivative = false;   ///< ∂U/∂t: DU/Dt of an unsteady carrier (never of a steady)
+    bool velocityGradient = false;  ///< ∇U: fluid acceleration, lift
+    bool turbulence = false;        ///< k and ε: turbulent eddy sampling
+    bool temperature = false;       ///< T: convective heating
+    bool timeDerivative = false;    ///< ∂U/∂t: DU/Dt of an unsteady carrier (never of a steady)
+    bool velocityLaplacian = false; ///< ∇²U: Faxén terms (physics/faxen.h)
 };
 
 /// One batch of samples, one entry per point, in the order of the points (structure of arrays).
@@ -38,6 +39,7 @@ struct CarrierSample {
     std::vector<double> dissipationRate;        ///< ε [m²/s³], filled when needs.turbulence
     std::vector<double> temperature;            ///< T [K], filled when needs.temperature
     std::vector<Vec3> velocityTimeDerivative;   ///< ∂U/∂t [m/s²], when needs.timeDerivative
+    std::vector<Vec3> velocityLaplacian;        ///< ∇²U [1/(m s)], when needs.velocityLaplacian
 
     void resize(std::size_t count, CarrierNeeds needs) {
         velocity.resize(count);
@@ -46,6 +48,7 @@ struct CarrierSample {
         dissipationRate.resize(needs.turbulence ? count : 0);
         temperature.resize(needs.temperature ? count : 0);
         velocityTimeDerivative.resize(needs.timeDerivative ? count : 0);
+        velocityLaplacian.resize(needs.velocityLaplacian ? count : 0);
     }
 };
 

@@ -35,7 +35,8 @@ enum class CarrierType {
     foamField,
     none,
     oscillatingGas,
-    taylorGreenVortex
+    taylorGreenVortex,
+    planePoiseuille
 };
 
 struct CarrierTypeName {
@@ -43,13 +44,21 @@ struct CarrierTypeName {
     std::string_view name;
 };
 
-constexpr std::array<CarrierTypeName, 6> carrierTypeNames() {
+constexpr std::array<CarrierTypeName, 7> carrierTypeNames() {
     return {{{CarrierType::analyticJet, "analyticJet"},
              {CarrierType::roundLaminarJet, "roundLaminarJet"},
              {CarrierType::foamField, "foamField"},
              {CarrierType::none, "none"},
              {CarrierType::oscillatingGas, "oscillatingGas"},
-             {CarrierType::taylorGreenVortex, "taylorGreenVortex"}}};
+             {CarrierType::taylorGreenVortex, "taylorGreenVortex"},
+             {CarrierType::planePoiseuille, "planePoiseuille"}}};
+}
+
+/// Whether a carrier type gives ∇²U (the Faxén terms, physics/faxen.h): the closed-form fields
+/// with curvature; a mesh's cellPoint field is linear in each tetrahedron.
+constexpr bool givesVelocityLaplacian(CarrierType type) {
+    return type == CarrierType::planePoiseuille || type == CarrierType::taylorGreenVortex ||
+           type == CarrierType::oscillatingGas;
 }
 
 struct JetGeometryName {
@@ -89,6 +98,9 @@ struct CarrierSettings {
     // taylorGreenVortex only (carrier/taylor_green_vortex.h):
     double vortexVelocity = 0;   ///< U [m/s]
     double vortexWavelength = 0; ///< L = 2π/k [m]
+    // planePoiseuille only (carrier/plane_poiseuille.h):
+    double centrelineVelocity = 0; ///< U [m/s]
+    double channelHalfWidth = 0;   ///< h [m]
 };
 
 } // namespace slides

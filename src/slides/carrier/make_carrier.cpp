@@ -5,6 +5,7 @@
 #include "slides/carrier/jet_scalars.h"
 #include "slides/carrier/no_gas.h"
 #include "slides/carrier/oscillating_gas.h"
+#include "slides/carrier/plane_poiseuille.h"
 #include "slides/carrier/round_laminar_jet.h"
 #include "slides/carrier/taylor_green_vortex.h"
 #include "slides/core/error.h"
@@ -62,6 +63,9 @@ std::unique_ptr<CarrierField> makeCarrier(const CarrierSettings& carrier, const 
     case CarrierType::taylorGreenVortex:
         return std::make_unique<TaylorGreenVortex>(carrier.vortexVelocity, carrier.vortexWavelength,
                                                    carrier.viscosity, gasTemperature);
+    case CarrierType::planePoiseuille:
+        return std::make_unique<PlanePoiseuille>(carrier.centrelineVelocity,
+                                                 carrier.channelHalfWidth, gasTemperature);
     case CarrierType::foamField: {
         auto field = std::make_unique<FoamCarrier>(
             caseDirectory, FoamCarrierSettings{carrier.foamTime, carrier.interpolation,

@@ -19,6 +19,7 @@ void OscillatingGas::sample(std::span<const Vec3> points, double time, CarrierNe
     out.resize(points.size(), needs);
     std::fill(out.velocity.begin(), out.velocity.end(), velocity(time));
     std::fill(out.velocityGradient.begin(), out.velocityGradient.end(), Mat3::Zero());
+    std::fill(out.velocityLaplacian.begin(), out.velocityLaplacian.end(), Vec3::Zero());
     fillLaminarScalars(out);
     std::fill(out.velocityTimeDerivative.begin(), out.velocityTimeDerivative.end(),
               acceleration(time));

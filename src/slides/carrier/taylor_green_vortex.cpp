@@ -43,6 +43,7 @@ void TaylorGreenVortex::sample(std::span<const Vec3> points, double time, Carrie
             g << a * cx * cy, -a * sx * sy, 0, a * sx * sy, -a * cx * cy, 0, 0, 0, 0;
         }
         if (needs.timeDerivative) out.velocityTimeDerivative[i] = -decayRate * u;
+        if (needs.velocityLaplacian) out.velocityLaplacian[i] = -2 * k * k * u;
     }
     fillLaminarScalars(out);
 }

@@ -3,8 +3,8 @@
 // uniform along z, with wavenumber k = 2π/L and decay F(t) = exp(−2νk²t):
 //   u = U sin kx cos ky F,   v = −U cos kx sin ky F,   w = 0,
 //   p/ρ = (U²/4)(cos 2kx + cos 2ky) F²,
-// so DU/Dt = ∂U/∂t + (U·∇)U = −∇p/ρ + ν∇²U with ∂U/∂t = −2νk²U: the carrier for the time
-// derivative and the pressure-gradient term of Eq. 3.3.
+// so DU/Dt = ∂U/∂t + (U·∇)U = −∇p/ρ + ν∇²U with ∂U/∂t = −2νk²U and ∇²U = −2k²U: the carrier
+// for the time derivative and the pressure-gradient term of Eq. 3.3.
 //
 //     carrier { type taylorGreenVortex; taylorGreenVortexCoeffs { velocity 1; wavelength 0.01; } }
 #pragma once

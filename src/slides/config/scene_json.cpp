@@ -91,6 +91,10 @@ nlohmann::json sceneSettings(const Scene& scene) {
     if (carrier.type == CarrierType::taylorGreenVortex)
         settings["carrier"]["taylorGreenVortex"] = {{"velocity", carrier.vortexVelocity},
                                                     {"wavelength", carrier.vortexWavelength}};
+    if (carrier.type == CarrierType::planePoiseuille)
+        settings["carrier"]["planePoiseuille"] = {
+            {"centrelineVelocity", carrier.centrelineVelocity},
+            {"halfWidth", carrier.channelHalfWidth}};
     if (carrier.foamSeries) {
         auto& series = settings["carrier"]["series"];
         series["times"] = carrier.foamSeries->range
@@ -127,6 +131,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"lift", nameOf(liftModelNames(), scene.physics.lift)},
         {"spin", scene.physics.spin},
         {"spinHistory", scene.physics.spinHistory},
+        {"faxen", scene.physics.faxen},
         {"autoThreshold", scene.physics.autoThreshold},
         {"dispersion",
          {{"model", nameOf(dispersionModelNames(), scene.physics.dispersion)},

@@ -53,7 +53,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "laminar jet; foamField: the OpenFOAM fields of this case (U; k, epsilon, T if present); "
          "none: no gas (a DEM scene: gravity and contacts only, time.dt given); oscillatingGas: "
          "uniform gas u = U sin 2πft; taylorGreenVortex: the decaying Taylor–Green vortex (both "
-         "unsteady, with closed forms)."},
+         "unsteady, with closed forms); planePoiseuille: steady channel flow u = U(1 − y²/h²) "
+         "along x."},
         {"carrier.analyticJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of the sech² jet (Eq. 5.10/5.11)."},
         {"carrier.analyticJetCoeffs.profile", K::word, "-", "axisymmetric",
@@ -106,6 +107,13 @@ std::vector<KeyDeclaration> declareKeys() {
          "Initial velocity amplitude U.", noMinimum, maximumGasSpeed},
         {"carrier.taylorGreenVortexCoeffs.wavelength", K::scalar, "m", "", {}, R::positive,
          "Period L of the vortex cells in x and y (k = 2π/L)."},
+        {"carrier.planePoiseuilleCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Plane Poiseuille flow u = U(1 − y²/h²) e_x, the parabola everywhere (walls are "
+         "surfaces of the case; carrier/plane_poiseuille.h)."},
+        {"carrier.planePoiseuilleCoeffs.centrelineVelocity", K::scalar, "m/s", "", {},
+         R::positive, "Centreline velocity U.", noMinimum, maximumGasSpeed},
+        {"carrier.planePoiseuilleCoeffs.halfWidth", K::scalar, "m", "", {}, R::positive,
+         "Half-width h: the walls' distance from the centreline y = 0."},
         {"carrier.foamFieldCoeffs.times", K::timeRange, "s", "-", {}, R::any,
          "A time series instead of one time directory: the written times from start to end "
          "(or all), U, k, epsilon, T linear in time between them on a fixed mesh "
@@ -340,6 +348,10 @@ std::vector<KeyDeclaration> declareKeys() {
          "The spin's unsteady torque (Eq. 3.19, Feuillebois & Lasek): the history of the spin "
          "relative to the fluid, window + exponential tail to physics.history.accuracy; turns "
          "spin on."},
+        {"physics.faxen", K::boolean, "-", "off", {}, R::any,
+         "Faxén terms of Eq. 3.2 (Maxey & Riley 1983): drag and history on u + (R²/6)∇²u − v, "
+         "added mass on u + (R²/10)∇²u − v; needs ∇²U, which planePoiseuille, taylorGreenVortex "
+         "and oscillatingGas give (refused for foamField and the jets)."},
         {"physics.autoThreshold", K::scalar, "-", "0.01", {}, R::positive,
          "A term set to auto is turned off when the scene analysis estimates its effect below "
          "this: the velocity change it drives over the largest gas or particle speed, or the "

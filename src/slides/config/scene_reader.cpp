@@ -626,6 +626,13 @@ void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
     // analysis decides for Magnus lift).
     physics.spin = spin.value_or(usesSpinLift(physics.lift) || physics.spinHistory);
     if (!spin && !lift && !physics.spinHistory) automatic.push_back({PhysicsTerm::spin, ""});
+    physics.faxen = keys.boolean("physics.faxen");
+    if (physics.faxen && !givesVelocityLaplacian(scene.carrier.type))
+        keys.fail("physics.faxen",
+                  "the Faxén terms need ∇²U of the carrier, which planePoiseuille, "
+                  "taylorGreenVortex and oscillatingGas give in closed form; foamField's cellPoint "
+                  "field is linear in each tetrahedron (∇²U = 0 there) and the jets' is not "
+                  "derived: set it off");
 }
 
 /// The unsteady forces left to auto made unavailable: a step other than the Maxey–Riley one
@@ -653,7 +660,8 @@ void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
     if (!fields.on()) return;
     if (physics.unsteadyForces())
         keys.fail(base + "model", "the Lorentz step does not take the unsteady forces (history, "
-                                  "added mass, pressure gradient, lift, spin): set them off");
+                                  "added mass, pressure gradient, lift, spin, Faxén): set them "
+                                  "off");
     leaveUnsteadyForcesOff(physics, "not with physics.electromagnetic");
 }
 
@@ -862,6 +870,11 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     if (carrier.type == CarrierType::taylorGreenVortex) {
         carrier.vortexVelocity = keys.scalar(coeffs + ".velocity");
         carrier.vortexWavelength = keys.scalar(coeffs + ".wavelength");
+        return carrier;
+    }
+    if (carrier.type == CarrierType::planePoiseuille) {
+        carrier.centrelineVelocity = keys.scalar(coeffs + ".centrelineVelocity");
+        carrier.channelHalfWidth = keys.scalar(coeffs + ".halfWidth");
         return carrier;
     }
     carrier.nozzleVelocity = keys.scalar(coeffs + ".nozzleVelocity");

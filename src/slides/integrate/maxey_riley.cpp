@@ -2,6 +2,7 @@
 
 #include "slides/core/parallel.h"
 #include "slides/physics/drag_response.h"
+#include "slides/physics/faxen.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/lift.h"
 #include "slides/physics/particle_reynolds.h"
@@ -25,6 +26,7 @@ MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const Fluid
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     needs_.timeDerivative = !steadyCarrier && (physics.addedMass || physics.pressureGradient);
+    needs_.velocityLaplacian = physics.faxen;
     width_ = 4; // age, v_{n−1}
     history_ = physics.history != HistoryModel::none;
     spinHistory_ = physics.spin && physics.spinHistory;
@@ -70,6 +72,13 @@ Vec3 MaxeyRileyStepper::spinWithHistory(double* state, double age, const Vec3& s
     return next;
 }
 
+Vec3 MaxeyRileyStepper::dragGasVelocity(const CarrierSample& gas, std::size_t i,
+                                        double radius) const {
+    return needs_.velocityLaplacian
+               ? faxenDragVelocity(gas.velocity[i], gas.velocityLaplacian[i], radius)
+               : gas.velocity[i];
+}
+
 void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasStart,
                                 const EndSampler& sampleEnd,
                                 const std::vector<double>& stepLengths) {
@@ -99,7 +108,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
         Vec3 startSlip = Vec3::Zero();
         if (history_) {
             Eigen::Map<Vec3> s0(state + historyOffset_);
-            if (state[0] == 0) s0 = gasStart.velocity[i] - v[i]; // released now
+            if (state[0] == 0) s0 = dragGasVelocity(gasStart, i, cloud.radius[i]) - v[i]; // now
             startSlip = s0;
             const double historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity,
                                                          cloud.radius[i], addedMass);
@@ -129,8 +138,8 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         const auto n = static_cast<std::size_t>(i);
-        const Vec3 slipStart = gasStart.velocity[n] - v[n];
-        const Vec3 slipEnd = gasEnd_.velocity[n] - predictedVelocity_[n];
+        const Vec3 slipStart = dragGasVelocity(gasStart, n, cloud.radius[n]) - v[n];
+        const Vec3 slipEnd = dragGasVelocity(gasEnd_, n, cloud.radius[n]) - predictedVelocity_[n];
         const bool bothEnds = releasedWithSlip(stateOf(i));
         starts[n] = (bothEnds ? slipStart : Vec3(0.5 * (slipStart + slipEnd))).norm();
         ends[n] = bothEnds ? slipEnd.norm() : 0.0;
@@ -153,8 +162,8 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
 
         SlipStep step;
         step.h = stepLengths[i];
-        step.gasStart = u0;
-        step.gasEnd = u1;
+        step.gasStart = dragGasVelocity(gasStart, static_cast<std::size_t>(i), radius);
+        step.gasEnd = dragGasVelocity(gasEnd_, static_cast<std::size_t>(i), radius);
         // Drag per effective mass k = f(Re)/τ_e = (ρp/ρ_e)/τ, frozen at its mean over the step:
         // at the predicted midpoint slip; after a release with slip, k varies as √age like the
         // slip, so the mean of k_n + (k_{n+1} − k_n)(√t − √t_n)/(√t_{n+1} − √t_n) over the step,
@@ -170,6 +179,15 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             step.dragRate = kStart;
         }
         step.forceStart = step.forceEnd = bodyAcceleration_;
+        if (needs_.velocityLaplacian && physics_.addedMass && step.h > 0) {
+            // C_A m_f d/dt((R²/10)∇²u) per effective mass, constant over the step so that the
+            // trapezoid rule integrates it to the difference of its ends (physics/faxen.h).
+            const Vec3 change = faxenAddedMassCorrection(gasEnd_.velocityLaplacian[i], radius) -
+                                faxenAddedMassCorrection(gasStart.velocityLaplacian[i], radius);
+            const Vec3 acceleration = addedMass * fluidDensity / effectiveDensity * change / step.h;
+            step.forceStart += acceleration;
+            step.forceEnd += acceleration;
+        }
         if (needs_.velocityGradient) {
             const Mat3& grad0 = gasStart.velocityGradient[i];
             const Mat3& grad1 = gasEnd_.velocityGradient[i];

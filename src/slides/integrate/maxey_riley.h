@@ -1,5 +1,6 @@
-// Maxey–Riley step: drag, added mass, pressure gradient, Basset history, lift and spin, when
-// any of the unsteady terms is on; the stepper keeps its exponential schemes otherwise.
+// Maxey–Riley step: drag, added mass, pressure gradient, Basset history, lift and spin, and the
+// Faxén terms of Eq. 3.2 (physics/faxen.h), when any of these is on; the stepper keeps its
+// exponential schemes otherwise.
 //
 // Reference: Eq. 3.3/3.4 and 3.18 of the reference. Per step of length h, for every particle:
 //   1. the carrier at x_n (U, ∇U when a term needs it, and ∂U/∂t of an unsteady carrier for the
@@ -26,7 +27,7 @@
 //
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;  // or
 //               meiAdrian, kim
-//               lift saffmanMei; spin on; spinHistory on; }
+//               lift saffmanMei; spin on; spinHistory on; faxen on; }
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
@@ -67,6 +68,9 @@ public:
                  const std::vector<double>& stepLengths);
 
 private:
+    /// The gas velocity the drag and history see at sample i: u, or u + (R²/6)∇²u with the
+    /// Faxén terms (physics/faxen.h).
+    Vec3 dragGasVelocity(const CarrierSample& gas, std::size_t i, double radius) const;
     /// ω after a step of h under the steady and history torques of Eq. 3.19, with the fluid
     /// rotation ½∇×U at its start and end; state holds σ0, I_n and the memory.
     Vec3 spinWithHistory(double* state, double age, const Vec3& spin, const Vec3& rotationStart,

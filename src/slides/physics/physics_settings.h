@@ -34,6 +34,7 @@ struct PhysicsSettings {
     LiftModel lift = LiftModel::none;
     bool spin = false;
     bool spinHistory = false; ///< the unsteady torque of Eq. 3.19 (needs spin)
+    bool faxen = false;       ///< Faxén terms of Eq. 3.2 (physics/faxen.h; needs ∇²U)
     DispersionModel dispersion = DispersionModel::none; ///< physics/dispersion.h
     DispersionConstants dispersionConstants;
     HeatTransferModel heatTransfer = HeatTransferModel::none; ///< physics/heat_transfer.h
@@ -43,10 +44,11 @@ struct PhysicsSettings {
     /// Largest estimated effect of a term that auto turns off (analysis/scene_analysis.h).
     double autoThreshold = 0.01;
 
-    /// Whether any unsteady term is on: then the Maxey–Riley step replaces the integrator.
+    /// Whether any unsteady term (or the Faxén terms) is on: then the Maxey–Riley step replaces
+    /// the integrator.
     bool unsteadyForces() const {
         return history != HistoryModel::none || addedMass || pressureGradient ||
-               lift != LiftModel::none || spin;
+               lift != LiftModel::none || spin || faxen;
     }
     /// What the terms ask of the carrier beside U: k and ε for dispersion, T for heat transfer
     /// (∇U is the Maxey–Riley step's, integrate/maxey_riley.h).

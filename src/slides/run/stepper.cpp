@@ -35,6 +35,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time,
                             carrier.steady());
         cloud_.stateWidth = maxeyRiley_->stateWidth();
+        if (maxeyRiley_->needs().velocityLaplacian && !carrier.provides().velocityLaplacian)
+            throw std::logic_error("Faxén terms on a carrier without ∇²U: refused when the scene "
+                                   "is read (config/scene_reader.cpp)");
     }
     if (scene.physics.electromagnetic.on()) {
         if (maxeyRiley_)
@@ -237,6 +240,7 @@ void Stepper::sampleGas(double) {
     CarrierNeeds needs = needs_;
     if (maxeyRiley_) needs.velocityGradient = maxeyRiley_->needs().velocityGradient;
     if (maxeyRiley_) needs.timeDerivative = maxeyRiley_->needs().timeDerivative;
+    if (maxeyRiley_) needs.velocityLaplacian = maxeyRiley_->needs().velocityLaplacian;
     sampleCarrier(cloud_.position, cloud_.carrierLocation, time_, needs, gas_);
 }
 
