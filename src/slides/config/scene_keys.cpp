@@ -371,7 +371,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Convective heating of the particles (Section 3.8, physics/heat_transfer.h)."},
         {"physics.heatTransfer.model", K::word, "-", "auto",
          namesOrAuto(heatTransferModelNames()), R::any,
-         "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28); auto: "
+         "Nusselt correlation: ranzMarshall (Eq. 3.27) or acrivosTaylor (Eq. 3.28); "
+         "michaelidesFeng: the unsteady Eq. 3.29 (Nu = 2 conduction, the fluid's heat capacity "
+         "and the history of the temperature difference, to physics.history.accuracy); auto: "
          "ranzMarshall where the scene analysis finds it matters."},
         {"physics.electromagnetic", K::dictionary, "-", "-", {}, R::any,
          "Forces on charged particles in applied fields (Section 2.7, physics/electromagnetic.h)."},

@@ -86,7 +86,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     auto& x = cloud.position;
     auto& v = cloud.velocity;
     const auto stateOf = [&](std::ptrdiff_t i) {
-        return cloud.modelState.data() + static_cast<std::size_t>(i) * width_;
+        return cloud.modelState.data() + static_cast<std::size_t>(i) * cloud.stateWidth;
     };
     const double fluidDensity = fluid_.density;
     const double particleDensity = particleDensity_;

@@ -54,7 +54,7 @@ public:
     MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
                       double particleDensity, const TimeSettings& time, bool steadyCarrier = true);
 
-    /// Doubles of model state per particle.
+    /// Doubles of model state per particle: the first of each particle's ParticleCloud::stateWidth.
     std::size_t stateWidth() const { return width_; }
     /// What the step needs of both carrier samples.
     CarrierNeeds needs() const { return needs_; }

@@ -8,13 +8,22 @@
 namespace slides {
 
 ParticleHeating::ParticleHeating(HeatTransferModel model, const FluidSettings& fluid,
-                                 const ParticleSettings& particles)
+                                 const ParticleSettings& particles, const TimeSettings& time,
+                                 double historyAccuracy)
     : model_(model), prandtl_(prandtlNumber(fluid.density, fluid.kinematicViscosity,
                                             fluid.specificHeat, fluid.thermalConductivity)),
       kinematicViscosity_(fluid.kinematicViscosity),
       thermalConductivity_(fluid.thermalConductivity), particleDensity_(particles.density),
       particleSpecificHeat_(particles.specificHeat),
-      injectionTemperature_(particles.injectionTemperature) {}
+      injectionTemperature_(particles.injectionTemperature), fluidDensity_(fluid.density),
+      fluidSpecificHeat_(fluid.specificHeat) {
+    if (model == HeatTransferModel::michaelidesFeng)
+        memory_ = WindowTailLayout::make(time.dt, time.endTime, historyAccuracy);
+}
+
+std::size_t ParticleHeating::stateWidth() const {
+    return memory_ ? michaelidesFengDoubles(*memory_) : 0;
+}
 
 void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
                               const std::vector<Vec3>& startVelocities,
@@ -26,6 +35,15 @@ void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const double radius = cloud.radius[i];
+        if (memory_) {
+            const MichaelidesFengRates rates =
+                michaelidesFengRates(particleDensity_, particleSpecificHeat_, radius, fluidDensity_,
+                                     fluidSpecificHeat_, thermalConductivity_);
+            double* state = cloud.modelState.data() + i * cloud.stateWidth + stateOffset_;
+            cloud.temperature[i] = advanceMichaelidesFeng(
+                rates, *memory_, state, cloud.temperature[i], gas.temperature[i], stepLengths[i]);
+            continue;
+        }
         const double reynolds = particleReynolds((gas.velocity[i] - startVelocities[i]).norm(),
                                                  radius, kinematicViscosity_);
         const double responseTime =

@@ -5,6 +5,7 @@
 // Particles, §4.3) for the heat flux on the particle surface.
 //
 //     physics { heatTransfer { model ranzMarshall; } }   // none | ranzMarshall | acrivosTaylor
+//                                                        // | michaelidesFeng
 //     fluid { thermalConductivity 0.0257; specificHeat 1005; }
 //     particles { specificHeat 460; injectionTemperature 293.15; }
 //
@@ -13,6 +14,8 @@
 //   acrivosTaylor   Nu = 2 + Pe/2 + Pe² ln(Pe)/4 + 0.03404 Pe² + Pe³ ln(Pe)/16, Pe = Re Pr
 //                   (Eq. 3.28: Stokes flow, a series valid for Pe ≲ 1; its first two terms are
 //                   the classical Nu = 2 (1 + Pe/4))
+//   michaelidesFeng Nu = 2 with the fluid's heat capacity and the history of Eq. 3.29
+//                   (physics/michaelides_feng.h: an unsteady model, not a correlation)
 // The heat flux over the whole surface 4πR² is Q = 4πR² h (θf − θ) = 2π Nu K_f R (θf − θ)
 // (Crowe et al.; the reference's Eq. 3.25–3.26 print πR² and ½π Nu K_f R, a quarter of it).
 // With m c_p dθ/dt = Q, θ relaxes to θf with the thermal response time
@@ -33,7 +36,7 @@
 
 namespace slides {
 
-enum class HeatTransferModel { none, ranzMarshall, acrivosTaylor };
+enum class HeatTransferModel { none, ranzMarshall, acrivosTaylor, michaelidesFeng };
 
 struct HeatTransferModelName {
     HeatTransferModel value;
@@ -41,10 +44,11 @@ struct HeatTransferModelName {
 };
 
 /// The name table of the heat-transfer family, as written in the dictionary.
-constexpr std::array<HeatTransferModelName, 3> heatTransferModelNames() {
+constexpr std::array<HeatTransferModelName, 4> heatTransferModelNames() {
     return {{{HeatTransferModel::none, "none"},
              {HeatTransferModel::ranzMarshall, "ranzMarshall"},
-             {HeatTransferModel::acrivosTaylor, "acrivosTaylor"}}};
+             {HeatTransferModel::acrivosTaylor, "acrivosTaylor"},
+             {HeatTransferModel::michaelidesFeng, "michaelidesFeng"}}};
 }
 
 /// Pr = ρf c_f ν / K_f of the gas.
@@ -58,7 +62,8 @@ inline double prandtlNumber(double density, double kinematicViscosity, double sp
 inline double nusseltNumber(HeatTransferModel model, double reynolds, double prandtl) {
     switch (model) {
     case HeatTransferModel::none: return 2.0;
-    case HeatTransferModel::ranzMarshall: // Eq. 3.27
+    case HeatTransferModel::michaelidesFeng: return 2.0; // Eq. 3.29's conduction term
+    case HeatTransferModel::ranzMarshall:                // Eq. 3.27
         return 2.0 + 0.6 * std::sqrt(reynolds) * std::cbrt(prandtl);
     case HeatTransferModel::acrivosTaylor: { // Eq. 3.28
         const double peclet = reynolds * prandtl;

@@ -25,7 +25,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
                                          scene.fluid.density, scene.physics.buoyancy)),
       injectors_(injectorsOf(scene), scene.collisions.model != CollisionModel::none),
       needs_(scene.physics.carrierNeeds()), dispersion_(scene.physics, scene.injection.seed),
-      heating_(scene.physics.heatTransfer, scene.fluid, scene.particles),
+      heating_(scene.physics.heatTransfer, scene.fluid, scene.particles, scene.time,
+               scene.physics.historyAccuracy),
       surfaces_(scene.surfaces, scene.collisions, scene.deposition, scene.particles,
                 scene.physics.heatTransfer, carrier) {
     if (!(scene.time.dt > 0))
@@ -39,6 +40,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
             throw std::logic_error("Faxén terms on a carrier without ∇²U: refused when the scene "
                                    "is read (config/scene_reader.cpp)");
     }
+    // modelState: the Maxey–Riley step's block, then the heat transfer's.
+    heating_.placeState(cloud_.stateWidth);
+    cloud_.stateWidth += heating_.stateWidth();
     if (scene.physics.electromagnetic.on()) {
         if (maxeyRiley_)
             throw std::logic_error("electromagnetic forces with unsteady forces: refused when "
