@@ -48,7 +48,8 @@ class FlatPatch : public ::testing::TestWithParam<bool> {};
 
 TEST_P(FlatPatch, IsMetAsItsPlane) {
     const PatchWall wall(floorSquare(GetParam()));
-    const Surface plane{"floor", Vec3::Zero(), Vec3::UnitZ(), {}, SurfaceInteraction::absorb, ""};
+    const Surface plane{"floor", Vec3::Zero(), Vec3::UnitZ(), {}, SurfaceInteraction::absorb, "",
+                        {}};
     std::mt19937_64 random(5);
     std::uniform_real_distribution<double> unit(0, 1);
     int met = 0;
