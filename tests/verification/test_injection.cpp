@@ -330,6 +330,179 @@ TEST(SeveralInjectors, BadInjectorsAreRefusedAtTheirKey) {
         << test::slurp(scratch.path / "log");
 }
 
+// ---- constant mass flow: re-injecting escaped particles (Section 5.2.4) ----------------------
+
+// Two guns in a domain box that ends at x = 0.02 m, before the target (0.06 m): every particle
+// escapes through the box, ~1 ms after it enters. The upper gun (ids 0–399, 1–5 ms) replaces
+// its escaped particles; the lower (ids 400–599, 0–2 ms) does not.
+const std::string escapingGuns = R"(
+injectors
+{
+    upper { model cone; centre (0 0.001 0); axis (1 0 0); radius 0; count 400; rate 1e5;
+            startTime 1e-3; reinjectEscaped yes; coneCoeffs { outerHalfAngle 5; speed 20; } }
+    lower { model disc; centre (0 -0.0005 0); axis (1 0 0); radius 1e-3; count 200; rate 1e5;
+            crossSpanSpeed 0.5; radiusDistribution { type fixed; value 40e-6; } }
+}
+collisions { model none; }
+)";
+
+/// The default case with escapingGuns, its domain box cut at x = 0.02 m, ending at 8 ms.
+std::string escapingGunsDictionary() {
+    std::string text = sprayDictionary(escapingGuns, 0);
+    text.replace(text.find("max     (0.065 0.03 0.03);"), 26, "max (0.02 0.03 0.03);");
+    text.replace(text.find("endTime         0.1;"), 20, "endTime 8e-3;");
+    return text;
+}
+
+constexpr long upperCount = 400, gunsCount = 600;
+
+/// The particles of the cloud that came from injector (ids: InjectorIds).
+long inFlightFrom(const Stepper& stepper, const InjectorIds& ids, std::int32_t injector) {
+    const auto& id = stepper.cloud().id;
+    return std::count_if(id.begin(), id.end(),
+                         [&](ParticleId i) { return ids.injectorOf(i) == injector; });
+}
+
+TEST(ConstantMassFlow, ReinjectionKeepsTheInjectorsParticlesInFlightAndConservesTheCount) {
+    test::ScratchDirectory scratch("reinject-count");
+    const Scene scene = sceneOf(scratch, escapingGunsDictionary());
+    const InjectorIds ids = injectorIds(scene);
+    const auto carrier = carrierOf(scene);
+    Stepper stepper(scene, *carrier);
+    long stepsAfterInjection = 0;
+    while (!stepper.finished()) {
+        stepper.step();
+        const auto& counters = stepper.counters();
+        ASSERT_EQ(counters.reinjected.size(), 2u);
+        // Conservation: every particle injected, first or again, is in flight, escaped or
+        // arrived, exactly.
+        ASSERT_EQ(stepper.injected() + long(counters.reinjected[0] + counters.reinjected[1]),
+                  long(stepper.cloud().size()) + stepper.escaped() +
+                      long(stepper.arrivals().size()));
+        ASSERT_EQ(counters.reinjected[1], 0u); // the lower gun does not re-inject
+        if (stepper.time() < 5e-3 - 1e-12) continue;
+        // Injection over (400 at 1e5/s from 1 ms): the upper gun's particles stay 400.
+        ASSERT_EQ(inFlightFrom(stepper, ids, 0), upperCount) << "t = " << stepper.time();
+        ++stepsAfterInjection;
+    }
+    EXPECT_EQ(stepsAfterInjection, 301); // t = 5 ms … 8 ms at dt = 1e-5 s
+    EXPECT_EQ(stepper.arrivals().size(), 0u);
+    EXPECT_EQ(inFlightFrom(stepper, ids, 1), 0); // the lower gun's all escaped, not replaced
+    // About 3 ms of 400 particles a ms-long flight apart: hundreds replaced, each escape of an
+    // upper particle once.
+    const auto reinjected = long(stepper.counters().reinjected[0]);
+    EXPECT_GT(reinjected, 400);
+    EXPECT_EQ(stepper.escaped(), reinjected + 200);
+    // New ids beyond both blocks, interleaved: 600 + 2 m for the upper gun, unique.
+    std::vector<ParticleId> inFlight = stepper.cloud().id;
+    std::sort(inFlight.begin(), inFlight.end());
+    EXPECT_EQ(std::adjacent_find(inFlight.begin(), inFlight.end()), inFlight.end());
+    EXPECT_GE(inFlight.back(), ParticleId(gunsCount));
+    EXPECT_LT(inFlight.back(), ParticleId(gunsCount + 2 * reinjected));
+    for (const ParticleId id : inFlight) {
+        if (id >= ParticleId(gunsCount)) {
+            ASSERT_EQ((id - gunsCount) % 2, 0u) << id;
+        }
+    }
+}
+
+TEST(ConstantMassFlow, ReinjectingRunIsTheSameForOneAndTwoThreadsAndAcrossARestart) {
+    test::ScratchDirectory scratch("reinject-threads");
+    const Scene scene = sceneOf(scratch, escapingGunsDictionary());
+    const auto carrier = carrierOf(scene);
+    constexpr int steps = 700;
+    std::vector<ParticleCloud> clouds;
+    for (int threads = 1; threads <= 2; ++threads) {
+        omp_set_num_threads(threads);
+        Stepper stepper(scene, *carrier);
+        for (int step = 0; step < steps; ++step) stepper.step();
+        ASSERT_GT(stepper.cloud().size(), 256u); // the particle loops run on both threads
+        clouds.push_back(stepper.cloud());
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    Stepper half(scene, *carrier), resumed(scene, *carrier);
+    for (int step = 0; step < steps / 2; ++step) half.step();
+    ASSERT_GT(half.counters().reinjected[0], 0u); // the restart falls amid the re-injections
+    resumed.resume(half.counters(), half.cloud(), half.arrivals());
+    for (int step = steps / 2; step < steps; ++step) resumed.step();
+    clouds.push_back(resumed.cloud());
+    for (std::size_t run = 1; run < clouds.size(); ++run) {
+        ASSERT_EQ(clouds[run].size(), clouds[0].size()) << run;
+        for (std::size_t i = 0; i < clouds[0].size(); ++i) {
+            ASSERT_EQ(clouds[run].id[i], clouds[0].id[i]) << run;
+            ASSERT_TRUE(clouds[run].position[i] == clouds[0].position[i]) << run;
+            ASSERT_TRUE(clouds[run].velocity[i] == clouds[0].velocity[i]) << run;
+        }
+    }
+}
+
+TEST(ConstantMassFlow, SummaryCountsTheReinjectedAndACheckpointKeepsTheCount) {
+    test::ScratchDirectory scratch("reinject-summary");
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << escapingGunsDictionary();
+    const auto summaryOf = [&](const std::string& options, const std::string& out) {
+        const std::string run = scratch.path.string() + " --quiet --output " +
+                                (scratch.path / out).string() + " " + options;
+        EXPECT_EQ(test::runCli(run, scratch.path / "log"), 0) << test::slurp(scratch.path / "log");
+        return nlohmann::json::parse(test::slurp(scratch.path / out / "summary.json"));
+    };
+    const auto whole = summaryOf("", "whole");
+    summaryOf("--checkpoint-every 300", "restarted");
+    const auto restarted = summaryOf("--restart", "restarted");
+    const auto& particles = whole["particles"];
+    const long reinjected = particles["reinjected"];
+    EXPECT_GT(reinjected, 400);
+    EXPECT_EQ(particles["reinjectedByInjector"]["upper"].get<long>(), reinjected);
+    EXPECT_EQ(particles["reinjectedByInjector"]["lower"].get<long>(), 0);
+    EXPECT_EQ(particles["injected"].get<long>(), gunsCount);
+    EXPECT_EQ(particles["active"].get<long>(), upperCount);
+    EXPECT_EQ(particles["escaped"].get<long>(), reinjected + 200);
+    for (const char* count : {"reinjected", "escaped", "active"})
+        EXPECT_EQ(restarted["particles"][count], particles[count]) << count;
+    // The last frame names the upper gun for its re-injected particles.
+    const Hdf5File h5(scratch.path / "whole" / "particles.h5", Hdf5Access::readOnly);
+    char last[32];
+    std::snprintf(last, sizeof last, "/frames/%06lld",
+                  static_cast<long long>(h5.readInt64("/", "frames") - 1));
+    const auto ids = h5.readUInt64(std::string(last) + "/id");
+    const auto injector = h5.readInt32(std::string(last) + "/injector");
+    ASSERT_EQ(ids.size(), std::size_t(upperCount));
+    for (std::size_t i = 0; i < ids.size(); ++i) ASSERT_EQ(injector[i], 0) << ids[i];
+}
+
+TEST(ConstantMassFlow, OffByDefaultAndBadValuesAreRefusedAtTheirKey) {
+    test::ScratchDirectory scratch("reinject-refusals");
+    const Scene off = sceneOf(scratch, sprayDictionary(twoGuns, 0));
+    for (const InjectorSettings& injector : off.injectors)
+        EXPECT_FALSE(injector.injection.reinjectEscaped);
+    const auto refusal = [&](const std::string& injection, long count = 0) {
+        try {
+            sceneOf(scratch, sprayDictionary(injection, count));
+        } catch (const InputError& error) {
+            return error.key() + ": " + error.reason();
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(refusal("injection { mode lattice; reinjectEscaped yes; latticeCoeffs { spacing "
+                      "1e-3; sites (10 10 10); } }",
+                      100),
+              "injection.reinjectEscaped: a lattice's sites are filled once");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; } }\n"
+                      "injection { reinjectEscaped yes; }"),
+              "injection.reinjectEscaped: with injectors, injection gives only the seed");
+    // A value that is no switch: exit status 2, the message naming file, line and key.
+    std::string text = escapingGunsDictionary();
+    const auto at = text.find("reinjectEscaped yes;");
+    text.replace(at, 20, "reinjectEscaped maybe;");
+    const auto line = 1 + std::count(text.begin(), text.begin() + long(at), '\n');
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", scratch.path / "log"), 2);
+    const std::string log = test::slurp(scratch.path / "log");
+    EXPECT_NE(log.find("slidesProperties:" + std::to_string(line) +
+                       ": key 'injectors.upper.reinjectEscaped'"),
+              std::string::npos)
+        << log;
+}
+
 TEST(CheckOption, ReadsAndAnalysesTheCaseAndWritesNothing) {
     test::ScratchDirectory scratch("inject-check");
     std::ofstream(scratch.path / "constant" / "slidesProperties") << sprayDictionary(twoGuns, 0);

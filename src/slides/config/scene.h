@@ -56,11 +56,7 @@ inline std::vector<std::string> injectorNames(const Scene& scene) {
     for (const InjectorSettings& injector : scene.injectors) names.push_back(injector.name);
     return names;
 }
-inline std::vector<std::uint64_t> injectorFirstIds(const Scene& scene) {
-    std::vector<std::uint64_t> firstIds;
-    for (const InjectorSettings& injector : scene.injectors) firstIds.push_back(injector.firstId);
-    return firstIds;
-}
+inline InjectorIds injectorIds(const Scene& scene) { return injectorIdsOf(scene.injectors); }
 
 /// Whether the particles carry a spin ω (surfaces/surface_settings.h).
 inline bool tracksSpin(const Scene& scene) {

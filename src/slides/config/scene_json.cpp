@@ -46,6 +46,7 @@ nlohmann::json injectorSettings(const InjectorSettings& injector) {
     }
     entry["mode"] = nameOf(injectionModeNames(), injector.injection.mode);
     entry["rate"] = injector.injection.rate;
+    entry["reinjectEscaped"] = injector.injection.reinjectEscaped;
     entry["radiusDistribution"] = radiusDistribution(injector.radius);
     if (injector.model == InjectionModel::disc)
         entry["crossSpanSpeed"] = injector.injection.crossSpanSpeed;
@@ -116,6 +117,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
     settings["injection"] = {{"mode", nameOf(injectionModeNames(), scene.injection.mode)},
                              {"rate", scene.injection.rate},
                              {"crossSpanSpeed", scene.injection.crossSpanSpeed},
+                             {"reinjectEscaped", scene.injection.reinjectEscaped},
                              {"seed", scene.injection.seed}};
     for (const InjectorSettings& injector : scene.injectors)
         settings["injectors"][injector.name] = injectorSettings(injector);

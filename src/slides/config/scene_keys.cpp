@@ -224,6 +224,11 @@ std::vector<KeyDeclaration> declareKeys() {
          "Magnitude of the random velocity perpendicular to the axis, random direction."},
         {"injection.seed", K::integer, "-", "1", {}, R::nonNegative,
          "Seed of the counter-based random numbers."},
+        {"injection.reinjectEscaped", K::boolean, "-", "no", {}, R::any,
+         "Constant mass flow (Section 5.2.4): each particle that escapes (leaves the domain box "
+         "or the mesh; not one that arrives at a surface) is replaced at the end of its step by "
+         "a new one drawn as the injector's own, with a new id (integrate/injector_set.h). "
+         "Modes rate and allAtStart; not in parallel runs."},
         {"injection.latticeCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Injection mode lattice: particle k on site (i, j, l), k = i + n_x (j + n_y l), at "
          "origin + ((i + ½) a, (j + ½) a, (l + ½) a)."},
@@ -263,6 +268,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "How long it injects (mode rate), with count or rate."},
         {"injectors.*.startTime", K::scalar, "s", "0", {}, R::nonNegative,
          "When it starts; a file's row times are added to it."},
+        {"injectors.*.reinjectEscaped", K::boolean, "-", "no", {}, R::any,
+         "Its escaped particles replaced by new ones of its own, as injection.reinjectEscaped "
+         "(models disc, cone, patch)."},
         {"injectors.*.crossSpanSpeed", K::scalar, "m/s", "0", {}, R::nonNegative,
          "Random velocity across the axis (model disc), as injection.crossSpanSpeed."},
         {"injectors.*.coneCoeffs", K::dictionary, "-", "-", {}, R::any,

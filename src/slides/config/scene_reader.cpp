@@ -452,7 +452,8 @@ void packInjector(const KeyReader& keys, const std::string& base, InjectorSettin
 /// The injectors of `injectors {}`, their ids in blocks in the order written.
 std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Dictionary& top,
                                             const Scene& scene) {
-    for (const char* shorthand : {"mode", "rate", "crossSpanSpeed", "latticeCoeffs"})
+    for (const char* shorthand :
+         {"mode", "rate", "crossSpanSpeed", "latticeCoeffs", "reinjectEscaped"})
         if (keys.has(std::string("injection.") + shorthand))
             keys.fail(std::string("injection.") + shorthand,
                       "with injectors, injection gives only the seed");
@@ -523,6 +524,10 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
         } else if (keys.has(base + ".coneCoeffs")) {
             keys.fail(base + ".coneCoeffs", "only model cone takes coneCoeffs");
         }
+        injector.injection.reinjectEscaped = keys.boolean(base + ".reinjectEscaped");
+        if (injector.injection.reinjectEscaped && injector.givesRows())
+            keys.fail(base + ".reinjectEscaped",
+                      "a file's or an ensemble's particles are its rows: none to draw anew");
         if (injector.model != InjectionModel::ensemble && keys.has(base + ".ensembleCoeffs"))
             keys.fail(base + ".ensembleCoeffs", "only model ensemble takes ensembleCoeffs");
         firstId += static_cast<std::uint64_t>(injector.count);
@@ -978,6 +983,9 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
             keys.fail(lattice + ".sites", "hold fewer sites than particles.count");
     }
     scene.injection.crossSpanSpeed = keys.scalar("injection.crossSpanSpeed");
+    scene.injection.reinjectEscaped = keys.boolean("injection.reinjectEscaped");
+    if (scene.injection.reinjectEscaped && scene.injection.mode == InjectionMode::lattice)
+        keys.fail("injection.reinjectEscaped", "a lattice's sites are filled once");
 
     scene.physics.drag = *valueNamed(dragModelNames(), keys.word("physics.drag"));
     scene.physics.gravity = keys.vector("physics.gravity");

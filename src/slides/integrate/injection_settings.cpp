@@ -23,9 +23,20 @@ double RadiusDistribution::meanRadius() const {
     return value;
 }
 
-std::int32_t injectorOfId(const std::vector<std::uint64_t>& firstIds, std::uint64_t id) {
+std::int32_t InjectorIds::injectorOf(std::uint64_t id) const {
+    if (id >= total && !firstIds.empty())
+        return static_cast<std::int32_t>((id - total) % firstIds.size());
     const auto after = std::upper_bound(firstIds.begin(), firstIds.end(), id);
     return static_cast<std::int32_t>(std::max<std::ptrdiff_t>(after - firstIds.begin() - 1, 0));
+}
+
+InjectorIds injectorIdsOf(const std::vector<InjectorSettings>& injectors) {
+    InjectorIds ids;
+    for (const InjectorSettings& injector : injectors) {
+        ids.firstIds.push_back(injector.firstId);
+        ids.total = injector.firstId + static_cast<std::uint64_t>(injector.count);
+    }
+    return ids;
 }
 
 InjectorSettings singleInjector(const InjectionSettings& injection, const JetNozzle& nozzle,

@@ -120,6 +120,10 @@ struct InjectionSettings {
     double latticeSpacing = 0;         ///< a [m]
     std::array<int, 3> latticeSites{}; ///< per axis
     double latticeVelocitySpread = 0;  ///< uniform in [−spread, spread] per component [m/s]
+    /// Each of its particles that escapes (leaves the domain box or the mesh) is replaced by a
+    /// new one of its own, so the number in flight, hence the mass flow, stays constant
+    /// (Section 5.2.4); models disc, cone and patch in mode rate or allAtStart.
+    bool reinjectEscaped = false;
 };
 
 enum class InjectionModel { disc, cone, file, patch, ensemble };
@@ -187,8 +191,24 @@ struct InjectorSettings {
     }
 };
 
-/// The index of the injector whose id block holds id, from the blocks' first ids (ascending).
-std::int32_t injectorOfId(const std::vector<std::uint64_t>& firstIds, std::uint64_t id);
+/// The particle ids of a run's injectors: injector j's own block [firstIds[j], firstIds[j + 1])
+/// (the last up to total), and past all blocks its re-injected particles, interleaved:
+/// the m-th particle injector j re-injects takes id total + J·m + j (J injectors). An id so
+/// names its injector without a table, and each injector's re-injected ids depend only on its
+/// own count, not on the order of escapes.
+struct InjectorIds {
+    std::vector<std::uint64_t> firstIds; ///< ascending
+    std::uint64_t total = 0;             ///< the particles of all blocks
+    /// The index of the injector particle id came from.
+    std::int32_t injectorOf(std::uint64_t id) const;
+    /// The id of the m-th particle injector re-injects.
+    std::uint64_t reinjectedId(std::size_t injector, std::uint64_t m) const {
+        return total + firstIds.size() * m + injector;
+    }
+};
+
+/// The ids of injectors (their firstId and count).
+InjectorIds injectorIdsOf(const std::vector<InjectorSettings>& injectors);
 
 /// The one injector that `nozzle` + `injection` + `particles` describe.
 InjectorSettings singleInjector(const InjectionSettings& injection, const JetNozzle& nozzle,

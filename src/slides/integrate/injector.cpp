@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 
 namespace slides {
 
@@ -111,7 +112,8 @@ void Injector::setStartStates(ParticleCloud& cloud, std::size_t from) const {
     }
 }
 
-void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud) {
+void Injector::drawStarts(std::span<const ParticleId> ids, const ParticleCloud& cloud) {
+    const std::size_t count = ids.size();
     positions_.resize(count);
     addedVelocities_.resize(count);
     patchNormals_.resize(startsAtNormalGasVelocity_ ? count : 0);
@@ -121,7 +123,7 @@ void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleClo
         if (startsAtNormalGasVelocity_) patchNormals_[k] = start.patchNormal;
     };
     if (!avoidOverlap_) {
-        for (std::size_t k = 0; k < count; ++k) keep(k, drawStart(first + k, 0));
+        for (std::size_t k = 0; k < count; ++k) keep(k, drawStart(ids[k], 0));
         return;
     }
     constexpr std::uint32_t attempts = 64;
@@ -137,7 +139,7 @@ void Injector::drawStarts(ParticleId first, std::size_t count, const ParticleClo
             nearby_.emplace_back(cloud.position[i], cloud.radius[i]);
     for (std::size_t k = 0; k < count; ++k) {
         for (std::uint32_t attempt = 0; attempt < attempts; ++attempt) {
-            keep(k, drawStart(first + k, attempt));
+            keep(k, drawStart(ids[k], attempt));
             const bool clear = std::none_of(nearby_.begin(), nearby_.end(), [&](const auto& other) {
                 const double contact = radii_[k] + other.second;
                 return (positions_[k] - other.first).squaredNorm() < contact * contact;
@@ -156,16 +158,38 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
            injectionTime(settings_.firstId + static_cast<ParticleId>(last)) < until)
         ++last;
     if (last == first) return;
+    ids_.resize(static_cast<std::size_t>(last - first));
+    std::iota(ids_.begin(), ids_.end(), settings_.firstId + static_cast<ParticleId>(first));
+    add(ids_, time, carrier, cloud);
+    injected_ = last;
+    // The batches' scratch goes once the last is in: a run injecting all at its start would
+    // keep about 80 B a particle in it. (Assigning {} would keep the capacity.) An injector
+    // that re-injects keeps it for the replacements.
+    if (finished() && !settings_.injection.reinjectEscaped) {
+        ids_ = std::vector<ParticleId>();
+        positions_ = std::vector<Vec3>();
+        addedVelocities_ = std::vector<Vec3>();
+        patchNormals_ = std::vector<Vec3>();
+        radii_ = std::vector<double>();
+        gas_ = CarrierSample{};
+    }
+}
 
+void Injector::reinject(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
+                        ParticleCloud& cloud) {
+    if (!ids.empty()) add(ids, time, carrier, cloud);
+}
+
+void Injector::add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
+                   ParticleCloud& cloud) {
     if (settings_.model == InjectionModel::patch && !patch_)
         patch_.emplace(carrier.patchTriangles(settings_.patch.name));
-    const auto count = static_cast<std::size_t>(last - first);
-    const ParticleId firstId = settings_.firstId + static_cast<ParticleId>(first);
+    const std::size_t count = ids.size();
     radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)
-        radii_[k] = settings_.givesRows() ? settings_.rows[firstId + k - settings_.firstId].radius
-                                          : radius_.draw(settings_.injection.seed, firstId + k);
-    drawStarts(firstId, count, cloud);
+        radii_[k] = settings_.givesRows() ? settings_.rows[ids[k] - settings_.firstId].radius
+                                          : radius_.draw(settings_.injection.seed, ids[k]);
+    drawStarts(ids, cloud);
     // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
     // step walks from there instead of searching again.
     if (carrier.keepsLocations()) {
@@ -178,22 +202,12 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     }
     for (std::size_t k = 0; k < count; ++k) {
-        const ParticleId id = firstId + k;
+        const ParticleId id = ids[k];
         Vec3 velocity = addedVelocities_[k];
         if (startsAtGasVelocity_) velocity += gas_.velocity[k];
         if (startsAtNormalGasVelocity_)
             velocity = gas_.velocity[k].dot(patchNormals_[k]) * patchNormals_[k];
         cloud.add(id, positions_[k], velocity, radii_[k]);
-    }
-    injected_ = last;
-    // The batches' scratch goes once the last is in: a run injecting all at its start would
-    // keep about 80 B a particle in it. (Assigning {} would keep the capacity.)
-    if (finished()) {
-        positions_ = std::vector<Vec3>();
-        addedVelocities_ = std::vector<Vec3>();
-        patchNormals_ = std::vector<Vec3>();
-        radii_ = std::vector<double>();
-        gas_ = CarrierSample{};
     }
 }
 

@@ -27,7 +27,10 @@
 // particles. A particle due within a step is added at the start of that step, at its start
 // point, and the stepper advances it over the rest of the step only (run/stepper.h).
 //
-//     injection { mode rate; rate 2e5; crossSpanSpeed 0.5; seed 1; }
+// With reinjectEscaped, the particles that replace escaped ones (integrate/injector_set.h) are
+// drawn as its own, keyed by their new ids (beyond every injector's block).
+//
+//     injection { mode rate; rate 2e5; crossSpanSpeed 0.5; seed 1; reinjectEscaped no; }
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
@@ -38,6 +41,7 @@
 #include "slides/integrate/size_distribution.h"
 
 #include <optional>
+#include <span>
 
 namespace slides {
 
@@ -59,6 +63,10 @@ public:
     /// Adds every particle due before `until` that is not yet in the cloud; the gas is
     /// sampled once for the whole batch.
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);
+    /// Adds the particles ids (not of its block: those that replace escaped ones) at time,
+    /// each drawn as one of its own.
+    void reinject(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
+                  ParticleCloud& cloud);
 
     long injected() const { return injected_; }
     /// Continues as if its first `injected` particles had been injected (restart).
@@ -87,9 +95,12 @@ private:
     };
     /// The start of particle id from its draw `attempt`.
     Start drawStart(ParticleId id, std::uint32_t attempt) const;
-    /// The starts of the new particles [first, first + count), each clear of the others near
-    /// the injector (avoidOverlap_) or the first draw.
-    void drawStarts(ParticleId first, std::size_t count, const ParticleCloud& cloud);
+    /// The starts of the new particles ids, each clear of the others near the injector
+    /// (avoidOverlap_) or the first draw.
+    void drawStarts(std::span<const ParticleId> ids, const ParticleCloud& cloud);
+    /// Adds the particles ids at time: radius, start, velocity (the gas sampled once).
+    void add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
+             ParticleCloud& cloud);
 
     InjectorSettings settings_;
     RadiusSampler radius_;
@@ -97,6 +108,7 @@ private:
     bool startsAtNormalGasVelocity_; ///< patch without a velocity: (U·n) n
     bool avoidOverlap_;              ///< redraw a start that overlaps a particle near the injector
     long injected_ = 0;
+    std::vector<ParticleId> ids_;
     std::vector<Vec3> positions_;
     std::vector<Vec3> addedVelocities_;
     std::vector<Vec3> patchNormals_;

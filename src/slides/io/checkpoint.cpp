@@ -133,6 +133,7 @@ void writeState(const Hdf5File& file, const RunSnapshot& snapshot, const SpringC
     file.writeAttribute(g, "wallSeconds", times.wallSeconds);
     file.writeAttribute(g, "steppingSeconds", times.steppingSeconds);
     writeColumn(file, g, "escapedThrough", counters.escapedThrough);
+    writeColumn(file, g, "reinjected", counters.reinjected);
 
     const Hdf5Handle cloud = file.createGroup(std::string(group) + "/cloud");
     ParticleCloud::forEachArray(snapshot.cloud, [&](const char* name, const auto& array) {
@@ -224,6 +225,9 @@ CheckpointState readState(const Hdf5File& file, const RunFingerprint& expected) 
         state.counters.collisions < 0)
         refuse(file.path(), "damaged: negative counter in " + g);
     state.counters.escapedThrough = file.readUInt64(g + "/escapedThrough");
+    // A checkpoint from before re-injection: a run that re-injects nothing.
+    if (file.exists(g + "/reinjected"))
+        state.counters.reinjected = file.readUInt64(g + "/reinjected");
 
     const std::size_t count = file.readUInt64(g + "/cloud/id").size();
     ParticleCloud::forEachArray(state.cloud, [&](const char* name, auto& array) {

@@ -60,7 +60,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
       carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
       fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin),
-      electromagnetic_(settings.electromagnetic), injectorFirstIds_(settings.injectorFirstIds) {
+      electromagnetic_(settings.electromagnetic), injectorIds_(settings.injectorIds) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -136,10 +136,10 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
 }
 
 void RunOutput::attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors) const {
-    if (injectorFirstIds_.empty()) return;
+    if (injectorIds_.firstIds.empty()) return;
     injectors.resize(frame.id.size());
     for (std::size_t i = 0; i < frame.id.size(); ++i)
-        injectors[i] = injectorOfId(injectorFirstIds_, frame.id[i]);
+        injectors[i] = injectorIds_.injectorOf(frame.id[i]);
     frame.injector = injectors;
 }
 

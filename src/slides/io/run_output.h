@@ -14,6 +14,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/integrate/injection_settings.h"
 #include "slides/io/frame_record.h"
 #include "slides/io/hdf5_particles.h"
 #include "slides/io/output_settings.h"
@@ -35,8 +36,8 @@ struct RunOutputSettings {
     bool spin = false;                   ///< particles carry a spin ω
     /// The particles' charges (physics/electromagnetic.h): an arrival's is its radius's.
     ElectromagneticSettings electromagnetic;
-    /// The first particle id of each injector of `injectors {}`; empty: no injector array.
-    std::vector<std::uint64_t> injectorFirstIds;
+    /// The particle ids of the injectors of `injectors {}`; none: no injector array.
+    InjectorIds injectorIds;
 };
 
 class RunOutput {
@@ -73,7 +74,7 @@ private:
     bool heating_;  ///< particles carry a temperature
     bool spinning_; ///< particles carry a spin ω
     ElectromagneticSettings electromagnetic_;
-    std::vector<std::uint64_t> injectorFirstIds_;
+    InjectorIds injectorIds_;
 };
 
 } // namespace slides

@@ -24,6 +24,8 @@ struct RunCounters {
     std::vector<std::uint64_t> escapedThrough;
     long collisions = 0;                 ///< particle–particle contacts
     std::vector<std::uint64_t> rebounds; ///< per surface
+    /// Particles re-injected in place of escaped ones, per injector; empty when none does.
+    std::vector<std::uint64_t> reinjected;
 };
 
 /// A view of the run's state: valid while the stepper it was taken from is not stepped.

@@ -4,6 +4,7 @@
 #include "slides/surfaces/deposit_metrics.h"
 
 #include <cmath>
+#include <numeric>
 
 namespace slides {
 
@@ -59,7 +60,7 @@ nlohmann::json arrivedByInjector(const SummaryInputs& inputs, const RunSnapshot&
     std::vector<std::vector<std::uint64_t>> counts(
         names.size(), std::vector<std::uint64_t>(inputs.surfaces.size(), 0));
     for (const Arrival& arrival : snapshot.arrivals)
-        ++counts[static_cast<std::size_t>(injectorOfId(inputs.injectorFirstIds, arrival.id))]
+        ++counts[static_cast<std::size_t>(inputs.injectorIds.injectorOf(arrival.id))]
                 [static_cast<std::size_t>(arrival.surface)];
     nlohmann::json byInjector = nlohmann::json::object();
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -108,6 +109,14 @@ nlohmann::json runSummary(const RunSnapshot& snapshot, const SummaryInputs& inpu
     summary["arrivals"] = arrivals;
     if (!inputs.injectorNames.empty())
         summary["particles"]["arrivedByInjector"] = arrivedByInjector(inputs, snapshot);
+    // Constant mass flow: the particles injected in place of escaped ones, beyond "injected".
+    if (!counters.reinjected.empty()) {
+        summary["particles"]["reinjected"] =
+            std::accumulate(counters.reinjected.begin(), counters.reinjected.end(), 0UL);
+        for (std::size_t j = 0; j < inputs.injectorNames.size(); ++j)
+            summary["particles"]["reinjectedByInjector"][inputs.injectorNames[j]] =
+                counters.reinjected[j];
+    }
     if (counters.collisions > 0 || inputs.collisions)
         summary["collisions"] = {{"particlePairs", counters.collisions}};
     for (std::size_t s = 0; s < surfaces.size(); ++s) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "slides/carrier/jet_frame.h"
+#include "slides/integrate/injection_settings.h"
 #include "slides/io/run_snapshot.h"
 #include "slides/surfaces/surface_settings.h"
 
@@ -37,10 +38,10 @@ struct SummaryInputs {
     double stokesResponseTime = 0; ///< at the mean radius [s]
     nlohmann::json sceneAnalysis;  ///< the scene analysis as JSON; null when not run
     nlohmann::json settings;       ///< every setting used, in SI units
-    /// The injectors of `injectors {}` and their first particle ids; empty: arrivals are not
-    /// split by injector.
+    /// The injectors of `injectors {}` and their particle ids; empty: arrivals are not split
+    /// by injector.
     std::vector<std::string> injectorNames;
-    std::vector<std::uint64_t> injectorFirstIds;
+    InjectorIds injectorIds;
 };
 
 /// Escapes by exit name: the carrier's patches by name, the domain box as "domain".

@@ -40,6 +40,13 @@ void requireParallelSupport(const RunOptions& options, const Scene& scene) {
     // Ranks sample the carrier together, call for call; adaptive sub-steps differ per rank.
     if (scene.time.integrator == Integrator::adaptiveRungeKutta)
         refuse(dictionary, "time.integrator", "adaptiveRungeKutta (sub-steps differ per rank)");
+    // Re-injected ids are counted per injector: the escapes of every rank would need summing.
+    if (scene.injection.reinjectEscaped)
+        refuse(dictionary, "injection.reinjectEscaped", "re-injecting escaped particles");
+    for (const InjectorSettings& injector : scene.injectors)
+        if (injector.injection.reinjectEscaped)
+            refuse(dictionary, "injectors." + injector.name + ".reinjectEscaped",
+                   "re-injecting escaped particles");
     for (const Surface& surface : scene.surfaces) {
         if (surface.interaction == SurfaceInteraction::deposit)
             refuse(dictionary, "surfaces." + surface.name + ".interaction",

@@ -41,7 +41,7 @@ RunOutputSettings runOutputSettings(const Scene& scene) {
             .temperature = scene.physics.heatTransfer != HeatTransferModel::none,
             .spin = tracksSpin(scene),
             .electromagnetic = scene.physics.electromagnetic,
-            .injectorFirstIds = injectorFirstIds(scene)};
+            .injectorIds = injectorIds(scene)};
 }
 
 SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {
@@ -55,7 +55,7 @@ SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {
             .sceneAnalysis = analysis ? sceneAnalysisJson(*analysis) : nlohmann::json(),
             .settings = sceneSettings(scene),
             .injectorNames = injectorNames(scene),
-            .injectorFirstIds = injectorFirstIds(scene)};
+            .injectorIds = injectorIds(scene)};
 }
 
 nlohmann::json runSummary(const ResolvedScene& resolved, const RunSnapshot& snapshot,

@@ -79,8 +79,11 @@ long Stepper::collisions() const {
 }
 
 RunCounters Stepper::counters() const {
-    return {time_,          steps_,          injectors_.injected(), escaped_,
-            particleSteps_, escapedThrough_, collisions(),          surfaces_.rebounds()};
+    RunCounters counters{
+        time_,           steps_,       injectors_.injected(), escaped_, particleSteps_,
+        escapedThrough_, collisions(), surfaces_.rebounds(),  {}};
+    if (injectors_.reinjects()) counters.reinjected = injectors_.reinjected();
+    return counters;
 }
 
 RunSnapshot Stepper::snapshot() const {
@@ -99,6 +102,7 @@ void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
     escapedThrough_ = counters.escapedThrough;
     particleSteps_ = counters.particleSteps;
     injectors_.resumeAt(counters.time, counters.injected);
+    injectors_.resumeReinjected(counters.reinjected);
     if (collisions_) collisions_->resume(counters.collisions);
     if (softSpheres_) softSpheres_->resume(counters.collisions, std::move(springs));
     surfaces_.resumeRebounds(counters.rebounds);
@@ -170,13 +174,17 @@ void Stepper::inject(double h) {
     stepLengths_.assign(cloud_.size(), h);
     for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
         stepLengths_[i] = std::clamp(time_ + h - injectors_.injectionTime(cloud_.id[i]), 0.0, h);
+    equipNewParticles(alreadyInFlight);
+    particleSteps_ += cloud_.size();
+}
+
+void Stepper::equipNewParticles(std::size_t from) {
     if (carrier_.keepsLocations()) cloud_.carrierLocation.resize(cloud_.size(), -1);
     if (tracksSpin_) cloud_.angularVelocity.resize(cloud_.size(), Vec3::Zero());
     if (heating_.on())
         cloud_.temperature.resize(cloud_.size(), scene_.particles.injectionTemperature);
-    if (chargedMotion_) chargedMotion_->charge(cloud_, alreadyInFlight);
-    injectors_.setStartStates(cloud_, alreadyInFlight);
-    particleSteps_ += cloud_.size();
+    if (chargedMotion_) chargedMotion_->charge(cloud_, from);
+    injectors_.setStartStates(cloud_, from);
 }
 
 void Stepper::kickByContacts(double) {
@@ -467,9 +475,13 @@ void Stepper::meetSurfaces(double h) {
             const std::size_t exit = exitOf(i);
             if (escapedThrough_.size() <= exit) escapedThrough_.resize(exit + 1, 0);
             ++escapedThrough_[exit];
+            injectors_.noteEscape(cloud_.id[i]);
         }
         cloud_.removeAt(i); // swaps in the last particle, already handled
     }
+    // Constant mass flow: the escaped particles' replacements enter at the step's end.
+    const std::size_t inFlight = cloud_.size();
+    if (injectors_.reinjectEscaped(time_ + h, carrier_, cloud_) > 0) equipNewParticles(inFlight);
 }
 
 } // namespace slides

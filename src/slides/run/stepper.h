@@ -36,7 +36,9 @@
 //      (run/rank_exchange.h), so the next stage finds its location current;
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
 //      (surfaces/surface_impacts.h): absorbed and stuck ones are frozen there as an Arrival;
-//      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud.
+//      one that left the domain box, or the carrier's mesh, has escaped; both leave the cloud;
+//      an escaped particle of an injector with reinjectEscaped is replaced at the step's end
+//      by a new one of that injector (integrate/injector_set.h).
 // On a 2-D carrier (a mesh between `empty` patches) the particles are held in its plane after
 // injection, the eddies' draw, the stream step and the surfaces (integrate/plane_constraint.h).
 // The step is the ordered list of these stages, each present only when its term is on, built
@@ -120,6 +122,9 @@ private:
     /// 0. every few steps, the cloud in the order of its carrier locations.
     void orderInMemory(double h);
     void inject(double h);
+    /// The arrays of the models that are on sized for the particles entered at [from, size),
+    /// with their start values (location unknown, no spin, injection temperature, charge).
+    void equipNewParticles(std::size_t from);
     /// 3c (soft spheres). The contact loads kick velocity and spin by half a step.
     void kickByContacts(double h);
     /// The paths' starts (positions, velocities) before the stream step.
