@@ -89,7 +89,8 @@ inline void writeSeedCheckpoint(const std::filesystem::path& directory) {
     const std::vector<Arrival> arrivals{
         {3, 0, 2.5e-3, Vec3(0.06, 1e-3, 0), Vec3(18, 1, 0), 40e-6, 350, Vec3::Zero()},
         {7, 0, 2.7e-3, Vec3(0.06, -2e-3, 1e-3), Vec3(17, -1, 0.5), 41e-6, 351, Vec3(0, 0, 5)}};
-    const RunSnapshot snapshot{{3e-3, 300, 12, 1, 2400, {0, 1}, 4, {2}}, cloud, arrivals, {}, {}};
+    const RunSnapshot snapshot{
+        {3e-3, 300, 12, 1, 2400, {0, 1}, 4, {2}, {}}, cloud, arrivals, {}, {}};
     const SpringColumns springs{
         {10, 11}, {12, 13}, {Vec3(1e-7, 0, 0), Vec3(0, -1e-7, 0)}, {2e-7, 3e-7}};
     const std::vector<FrameRecord> frames{{0, 0}, {1e-3, 5}, {2e-3, 9}};
