@@ -1015,8 +1015,8 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         if (scene.physics.unsteadyForces())
             keys.fail("time.integrator",
                       "adaptiveRungeKutta does not take the unsteady forces (history, added "
-                      "mass, pressure gradient, lift, spin), whose step is a whole dt: set them "
-                      "off, or use exponentialMidpoint");
+                      "mass, pressure gradient, lift, spin, Faxén), whose step is a whole dt: "
+                      "set them off, or use exponentialMidpoint");
         leaveUnsteadyForcesOff(scene.physics, "not with time.integrator adaptiveRungeKutta");
     }
     if (scene.physics.electromagnetic.on() &&
