@@ -87,6 +87,19 @@ TEST(AdaptiveRuns, FallsUnderGravityAndStokesDragAsTheClosedForm) {
     }
 }
 
+TEST(AdaptiveRuns, ATolerancePastDoublePrecisionEndsAtItsRounding) {
+    // TOL = 1e-300 asks for errors no double can hold: the error scale stops at 4 ε of the
+    // state (integrate/adaptive_runge_kutta.h), so the fall takes about as many sub-steps as at
+    // the finest tolerance it can meet, and ends as close to the closed form as doubles allow.
+    const Fall finest = fallFor(1e-300), fine = fallFor(1e-12);
+    std::printf("TOL 1e-300: velocity error %.2e, position error %.2e, %ld sub-steps; TOL 1e-12: "
+                "%ld sub-steps\n",
+                finest.velocityError, finest.positionError, finest.subSteps, fine.subSteps);
+    EXPECT_LT(finest.subSteps, 10 * fine.subSteps);
+    EXPECT_LT(finest.velocityError, 1e-13);
+    EXPECT_LT(finest.positionError, 1e-13);
+}
+
 TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
     // A 50 µm particle (τ = 77 ms, m = 1.3e-9 kg) of charge 1.3e-7 C in E = (1 0 0) V/m,
     // B = (0 0 0.5) T (|Ω| = qB/m = 50 rad/s, qE/m = 100 m/s²) and a uniform stream under Stokes

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace slides {
 
@@ -92,13 +93,21 @@ inline double scaledError(const MotionState& error, const MotionState& scale) {
 }
 
 /// The scale of a particle's error: TOL × radius for a position, TOL × the larger of its
-/// speeds and the gas speed for a velocity.
+/// speeds and the gas speed for a velocity; never below 4 ε of the state and of its change over
+/// the sub-step, the rounding of double precision in them: a tolerance finer than that (1e-300,
+/// say) ends the sub-steps where the state can tell no more, instead of shrinking them to the
+/// floor of keepsStep and taking 10¹² of them.
 inline MotionState errorScale(double tolerance, double radius, const MotionState& from,
                               const MotionState& to, double gasSpeed) {
+    constexpr double rounding = 4 * std::numeric_limits<double>::epsilon();
     const double speed = std::max({from.tail<3>().norm(), to.tail<3>().norm(), gasSpeed});
+    const double position = std::max(from.head<3>().norm(), to.head<3>().norm());
+    const double moved = (to.head<3>() - from.head<3>()).norm();
+    const double accelerated = (to.tail<3>() - from.tail<3>()).norm();
     MotionState scale;
-    scale.head<3>().setConstant(tolerance * radius);
-    scale.tail<3>().setConstant(tolerance * std::max(speed, 1e-300));
+    scale.head<3>().setConstant(std::max(tolerance * radius, rounding * (position + moved)));
+    scale.tail<3>().setConstant(
+        std::max(tolerance * std::max(speed, 1e-300), rounding * (speed + accelerated)));
     return scale;
 }
 
