@@ -27,6 +27,11 @@ const test::BrokenCase limitCases[] = {
      "    carrierResolution   (100000 100000 100000);", 0,
      "key 'output.carrierResolution': the carrier grid's 100000×100000×100000 points need at "
      "least 4.8e+16 bytes, more than the machine's memory"},
+    // The parabola U(1 − y²/h²) at the domain's y = ±0.03 m: infinite for h = 1e-300.
+    {"channelNarrowerThanAnyFlow", "    type        analyticJet;",
+     "    type        planePoiseuille;\n"
+     "    planePoiseuilleCoeffs { centrelineVelocity 1; halfWidth 1e-300; }",
+     1, "key 'carrier.planePoiseuilleCoeffs.halfWidth': the gas speed U|1 − y²/h²| reaches inf"},
     {"historyAccuracyPastDoublePrecision", "    drag        haiderLevenspiel;",
      "    drag        haiderLevenspiel;\n    history { model basset; accuracy 1e-300; }", 1,
      "key 'physics.history.accuracy': must be at least 1e-10"},

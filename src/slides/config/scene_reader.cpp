@@ -904,6 +904,22 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     return carrier;
 }
 
+/// planePoiseuille: the parabola U(1 − y²/h²) keeps growing past the walls; over the domain it
+/// must stay within the bound of the centreline velocity's key, or a particle straying there
+/// meets a gas no jet has (h = 1e-300 gave an infinite velocity).
+void requireBoundedChannelFlow(const KeyReader& keys, const Scene& scene) {
+    const CarrierSettings& carrier = scene.carrier;
+    const double edge = std::max(std::abs(scene.domain.min.y()), std::abs(scene.domain.max.y()));
+    const double widths = edge / carrier.channelHalfWidth;
+    const double fastest = carrier.centrelineVelocity * std::max(1.0, widths * widths - 1);
+    const double bound = findSceneKey("carrier.planePoiseuilleCoeffs.centrelineVelocity")->maximum;
+    if (fastest <= bound) return;
+    std::ostringstream reason;
+    reason << "the gas speed U|1 − y²/h²| reaches " << fastest << " m/s at the domain's y = ±"
+           << edge << " m, more than " << bound << " m/s: widen the channel or narrow the domain";
+    keys.fail("carrier.planePoiseuilleCoeffs.halfWidth", reason.str());
+}
+
 /// The escape box, and the nozzle inside it.
 void readDomain(const KeyReader& keys, Scene& scene) {
     scene.domain.min = keys.vector("domain.min");
@@ -1059,6 +1075,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     if (scene.carrier.type != CarrierType::foamField)
         keys.require("domain", "for an analytic carrier");
     if (!scene.domainFromCarrier) readDomain(keys, scene);
+    if (scene.carrier.type == CarrierType::planePoiseuille) requireBoundedChannelFlow(keys, scene);
 
     scene.output.interval = keys.scalar("output.interval");
     scene.output.carrierResolution = keys.integerTriple("output.carrierResolution");
