@@ -181,13 +181,13 @@ Scene sceneWith(const std::string& carrier, const std::string& physics) {
 
 TEST(FaxenTerms, KeysReachTheSceneAndACarrierWithoutLaplacianIsRefused) {
     const std::string channel =
-        "type planePoiseuille; planePoiseuilleCoeffs { centrelineVelocity 2; halfWidth 0.01; }";
+        "type planePoiseuille; planePoiseuilleCoeffs { centrelineVelocity 2; halfWidth 0.5; }";
     const Scene on = sceneWith(channel, "faxen on;");
     EXPECT_TRUE(on.physics.faxen);
     EXPECT_TRUE(on.physics.unsteadyForces());
     EXPECT_EQ(on.carrier.type, CarrierType::planePoiseuille);
     EXPECT_EQ(on.carrier.centrelineVelocity, 2);
-    EXPECT_EQ(on.carrier.channelHalfWidth, 0.01);
+    EXPECT_EQ(on.carrier.channelHalfWidth, 0.5);
     EXPECT_FALSE(sceneWith(channel, "").physics.faxen); // off by default
     try {
         sceneWith("type analyticJet; analyticJetCoeffs { nozzleVelocity 10; }", "faxen on;");

@@ -113,7 +113,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.planePoiseuilleCoeffs.centrelineVelocity", K::scalar, "m/s", "", {},
          R::positive, "Centreline velocity U.", noMinimum, maximumGasSpeed},
         {"carrier.planePoiseuilleCoeffs.halfWidth", K::scalar, "m", "", {}, R::positive,
-         "Half-width h: the walls' distance from the centreline y = 0."},
+         "Half-width h: the walls' distance from the centreline y = 0; the parabola must stay "
+         "within 10000 m/s over the domain."},
         {"carrier.foamFieldCoeffs.times", K::timeRange, "s", "-", {}, R::any,
          "A time series instead of one time directory: the written times from start to end "
          "(or all), U, k, epsilon, T linear in time between them on a fixed mesh "
