@@ -275,8 +275,9 @@ TEST_P(SlidingIntoRolling, RollsAtFiveSeventhsAfterTwoSeventhsOfTheSlidingTime) 
     EXPECT_NEAR(scene.first.sphere.velocity.x(), 5.0 / 7.0 * v0, 1e-5 * v0);
     EXPECT_NEAR(scene.first.sphere.spin.y() * radius, 5.0 / 7.0 * v0, 1e-5 * v0);
     // R₁ is exactly μ beyond ε: the slip reaches ε at 2(v₀ − ε)/(7μg), within the step.
-    if (GetParam().regularisation == FrictionRegularisation::linear)
+    if (GetParam().regularisation == FrictionRegularisation::linear) {
         EXPECT_NEAR(slipEnd, 2 * (v0 - epsilon) / (7 * mu * g), 2 * dt);
+    }
     EXPECT_NEAR(slipEnd / rollingTime, 1.0, 2e-3); // within ε/v₀ of the Coulomb limit's
 }
 
