@@ -262,6 +262,46 @@ TEST(HistoryWindowTail, FollowsTheFullMemoryReference) {
     }
 }
 
+TEST(HistoryWindowTail, SinglePrecisionSumsStayWithinATenthOfTheAccuracy) {
+    // The fastest terms' sums are kept in float (WindowTailLayout::singleTerms). Rounded each
+    // step, a sum decaying by e^{−h/θ} can stall at most 2⁻²⁴ θ/h of itself from its value, and
+    // the layout keeps that below accuracy/10; the sums add up to at most the history integral of
+    // |ρ|, itself at most the terminal slip's (gravity, released with slip). So the velocities
+    // with and without the single sums differ by at most accuracy/10 of the terminal slip, over
+    // 10⁵ steps that end near the terminal slip (ρ constant: where a stall would show).
+    const Case& c = light;
+    const double h = 1.0 / c.dragRate() / 200;
+    const long steps = 100000;
+    const double terminalSlip = std::abs(c.gravity() / c.dragRate());
+    for (const double accuracy : {1e-2, 1e-3, 1e-4}) {
+        const WindowTailLayout mixed = WindowTailLayout::make(h, h * steps, accuracy);
+        WindowTailLayout allDouble = mixed;
+        allDouble.singleTerms = 0;
+        ASSERT_GT(mixed.singleTerms, 0u);
+        std::vector<double> mixedState(mixed.doubles(), 0.0), doubleState(allDouble.doubles(), 0.0);
+        WindowTailHistory mixedMemory(mixed, mixedState.data());
+        WindowTailHistory doubleMemory(allDouble, doubleState.data());
+        SlipStep step;
+        step.h = h;
+        step.dragRate = c.dragRate();
+        step.historyRate = c.historyRate();
+        step.forceStart = step.forceEnd = Vec3(0, 0, c.gravity());
+        Vec3 vMixed(0.3, 0, 0), vDouble = vMixed;
+        HistoryStart startMixed{-vMixed, 0, Vec3::Zero()}, startDouble = startMixed;
+        double deviation = 0;
+        for (long n = 0; n < steps; ++n) {
+            vMixed = advanceWithHistory(step, vMixed, startMixed, mixedMemory).velocity;
+            vDouble = advanceWithHistory(step, vDouble, startDouble, doubleMemory).velocity;
+            deviation = std::max(deviation, (vMixed - vDouble).norm());
+        }
+        std::printf("accuracy %.0e: %zu of %zu terms single, %zu against %zu bytes, max |Δv| "
+                    "%.2e m/s (%.1e of the terminal slip)\n",
+                    accuracy, mixed.singleTerms, mixed.tail.size(), mixed.doubles() * 8,
+                    allDouble.doubles() * 8, deviation, deviation / terminalSlip);
+        EXPECT_LT(deviation, accuracy / 10 * terminalSlip);
+    }
+}
+
 TEST(HistoryWindowTail, ExponentialSumMeetsItsTargetOverTheWholeRange) {
     // Relative error of the fitted sum against 1/√ℓ on a log grid over [window, horizon].
     for (const double accuracy : {1e-2, 1e-3, 1e-6}) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <numeric>
 
 namespace slides {
 
@@ -276,6 +277,25 @@ Vec3 FullHistory::beginStep(double stepLength) {
     return sum;
 }
 
+namespace {
+
+/// Orders the terms by falling timescale (the lumped lowest rates come first).
+void sortSlowestFirst(ExponentialSum& sum) {
+    std::vector<std::size_t> order(sum.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return sum.timescale[a] > sum.timescale[b];
+    });
+    ExponentialSum sorted;
+    for (const std::size_t i : order) {
+        sorted.amplitude.push_back(sum.amplitude[i]);
+        sorted.timescale.push_back(sum.timescale[i]);
+    }
+    sum = std::move(sorted);
+}
+
+} // namespace
+
 WindowTailLayout WindowTailLayout::make(double h, double horizon, double accuracy,
                                         LowRates lowRates) {
     WindowTailLayout layout;
@@ -290,6 +310,11 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
         std::clamp(static_cast<int>(std::lround(1.0 / stepY)), 1, WindowTailHistory::largestWindow);
     const double windowLength = layout.window * h;
     layout.tail = ExponentialSum::fit(windowLength, horizon, accuracy, lowRates);
+    sortSlowestFirst(layout.tail);
+    const double singleLongest = accuracy / 10 * 0x1p24 * h; // 2⁻²⁴ θ/h ≤ accuracy/10
+    layout.singleTerms = static_cast<std::size_t>(
+        std::count_if(layout.tail.timescale.begin(), layout.tail.timescale.end(),
+                      [&](double theta) { return theta <= singleLongest; }));
     const double rootH = std::sqrt(h);
     for (int k = 0; k < layout.window; ++k)
         layout.windowWeights.push_back(rootH * productWeight(2, k));
@@ -323,9 +348,8 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
     // first step's length h' and the steps taken n. The spin kernel's amplitudes are Basset's
     // times t_v x_i/(1 + t_v x_i), x_i = 1/θ_i.
     const int window = layout_.window;
-    double* tail = state_ + 3 * (window + 1);
-    double& firstStep = tail[3 * layout_.tail.size()];
-    const auto steps = static_cast<long>(tail[3 * layout_.tail.size() + 1]);
+    double& firstStep = counters()[0];
+    const auto steps = static_cast<long>(counters()[1]);
     if (steps == 0) firstStep = stepLength;
     const bool shortFirst = firstStep != layout_.h;
     newestWeight_ = windowWeights_[0];
@@ -349,15 +373,15 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
     for (std::size_t i = 0; i < layout_.tail.size(); ++i) {
         const double spectrum =
             viscousTime == 0 ? 1.0 : viscousTime / (layout_.tail.timescale[i] + viscousTime);
-        Eigen::Map<Vec3> term(tail + 3 * i);
         const double newWeight =
             firstEntersTail ? tailEntryWeights(layout_.tail.amplitude[i], layout_.tail.timescale[i],
                                                window * layout_.h, firstStep)
                                   .newer
                             : layout_.tailNewWeight[i];
-        term = layout_.tailDecay[i] * term +
-               spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder);
-        known += term;
+        storeTailSum(
+            i, layout_.tailDecay[i] * tailSum(i) +
+                   spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder));
+        known += tailSum(i); // as stored
     }
     return known;
 }
@@ -366,7 +390,26 @@ void WindowTailHistory::endStep(const Vec3& remainder) {
     std::memmove(state_ + 3, state_, sizeof(double) * 3 * static_cast<std::size_t>(layout_.window));
     Eigen::Map<Vec3> newest(state_);
     newest = remainder;
-    state_[3 * (layout_.window + 1 + layout_.tail.size()) + 1] += 1; // steps taken
+    counters()[1] += 1; // steps taken
+}
+
+Vec3 WindowTailHistory::tailSum(std::size_t i) const {
+    const std::size_t doubleTerms = layout_.doubleTerms();
+    if (i < doubleTerms) return Vec3(doubleTail() + 3 * i);
+    std::array<float, 3> single{};
+    std::memcpy(single.data(), singleTail() + sizeof(single) * (i - doubleTerms), sizeof(single));
+    return {single[0], single[1], single[2]};
+}
+
+void WindowTailHistory::storeTailSum(std::size_t i, const Vec3& sum) {
+    const std::size_t doubleTerms = layout_.doubleTerms();
+    if (i < doubleTerms) {
+        Eigen::Map<Vec3>(doubleTail() + 3 * i) = sum;
+        return;
+    }
+    const std::array<float, 3> single{static_cast<float>(sum.x()), static_cast<float>(sum.y()),
+                                      static_cast<float>(sum.z())};
+    std::memcpy(singleTail() + sizeof(single) * (i - doubleTerms), single.data(), sizeof(single));
 }
 
 StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,

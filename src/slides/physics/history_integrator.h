@@ -171,16 +171,25 @@ private:
 struct WindowTailLayout {
     double h = 0;
     int window = 1;                    ///< steps integrated exactly (lags 0 … window)
-    ExponentialSum tail;               ///< kernel for lags ≥ window·h
+    ExponentialSum tail;               ///< kernel for lags ≥ window·h, slowest term first
     std::vector<double> windowWeights; ///< √h c_k, k = 0 … window−1, and √h·end weight at window
     std::vector<double> tailDecay, tailNewWeight, tailOldWeight; ///< per term, for one step
+    /// The last (fastest) terms, whose sums WindowTailHistory keeps in single precision: a sum
+    /// that decays by e^{−h/θ} a step and is rounded to float each step can stall up to
+    /// 2⁻²⁴ θ/h of itself away from its value (the rounding's fixed point), so a term is single
+    /// only where that stays below a tenth of the accuracy target.
+    std::size_t singleTerms = 0;
 
     /// Window and terms from the accuracy target (relative kernel error) for ages up to horizon.
     static WindowTailLayout make(double h, double horizon, double accuracy,
                                  LowRates lowRates = LowRates::lumped);
-    /// Doubles per particle: ρ at lags 0 … window and one tail sum per term, 3 components each;
-    /// the first step's length and the steps taken.
-    std::size_t doubles() const { return 3 * (window + 1 + tail.size()) + 2; }
+    std::size_t doubleTerms() const { return tail.size() - singleTerms; }
+    /// Doubles per particle: ρ at lags 0 … window, 3 components each; the double tail sums (3
+    /// each), the single ones (3 floats each, two to a double); the first step's length and the
+    /// steps taken.
+    std::size_t doubles() const {
+        return 3 * (window + 1 + doubleTerms()) + (3 * singleTerms + 1) / 2 + 2;
+    }
 };
 
 /// Production memory: a view on one particle's doubles (layout.doubles() of them). The layout
@@ -198,6 +207,14 @@ public:
 
 private:
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
+    /// Tail term i's sum, read from and written to its precision's block.
+    Vec3 tailSum(std::size_t i) const;
+    void storeTailSum(std::size_t i, const Vec3& sum);
+    double* doubleTail() const { return state_ + 3 * (layout_.window + 1); }
+    unsigned char* singleTail() const {
+        return reinterpret_cast<unsigned char*>(doubleTail() + 3 * layout_.doubleTerms());
+    }
+    double* counters() const { return state_ + layout_.doubles() - 2; }
     const WindowTailLayout& layout_;
     double* state_;
     HistoryKernel kernel_;
