@@ -370,7 +370,7 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
     }
     const bool firstEntersTail = shortFirst && steps == window;
     const double viscousTime = kernel_.viscousTime;
-    for (std::size_t i = 0; i < layout_.tail.size(); ++i) {
+    const auto advanced = [&](std::size_t i, const Vec3& sum) -> Vec3 {
         const double spectrum =
             viscousTime == 0 ? 1.0 : viscousTime / (layout_.tail.timescale[i] + viscousTime);
         const double newWeight =
@@ -378,10 +378,24 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
                                                window * layout_.h, firstStep)
                                   .newer
                             : layout_.tailNewWeight[i];
-        storeTailSum(
-            i, layout_.tailDecay[i] * tailSum(i) +
-                   spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder));
-        known += tailSum(i); // as stored
+        return layout_.tailDecay[i] * sum +
+               spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder);
+    };
+    const std::size_t doubleTerms = layout_.doubleTerms();
+    for (std::size_t i = 0; i < doubleTerms; ++i) {
+        Eigen::Map<Vec3> sum(doubleTail() + 3 * i);
+        sum = advanced(i, sum);
+        known += sum;
+    }
+    for (std::size_t i = doubleTerms; i < layout_.tail.size(); ++i) {
+        unsigned char* bytes = singleTail() + sizeof(SingleSum) * (i - doubleTerms);
+        SingleSum sum;
+        std::memcpy(sum.data(), bytes, sizeof(sum));
+        const Vec3 next = advanced(i, Vec3(sum[0], sum[1], sum[2]));
+        sum = {static_cast<float>(next.x()), static_cast<float>(next.y()),
+               static_cast<float>(next.z())};
+        std::memcpy(bytes, sum.data(), sizeof(sum));
+        known += Vec3(sum[0], sum[1], sum[2]); // as kept
     }
     return known;
 }
@@ -391,25 +405,6 @@ void WindowTailHistory::endStep(const Vec3& remainder) {
     Eigen::Map<Vec3> newest(state_);
     newest = remainder;
     counters()[1] += 1; // steps taken
-}
-
-Vec3 WindowTailHistory::tailSum(std::size_t i) const {
-    const std::size_t doubleTerms = layout_.doubleTerms();
-    if (i < doubleTerms) return Vec3(doubleTail() + 3 * i);
-    std::array<float, 3> single{};
-    std::memcpy(single.data(), singleTail() + sizeof(single) * (i - doubleTerms), sizeof(single));
-    return {single[0], single[1], single[2]};
-}
-
-void WindowTailHistory::storeTailSum(std::size_t i, const Vec3& sum) {
-    const std::size_t doubleTerms = layout_.doubleTerms();
-    if (i < doubleTerms) {
-        Eigen::Map<Vec3>(doubleTail() + 3 * i) = sum;
-        return;
-    }
-    const std::array<float, 3> single{static_cast<float>(sum.x()), static_cast<float>(sum.y()),
-                                      static_cast<float>(sum.z())};
-    std::memcpy(singleTail() + sizeof(single) * (i - doubleTerms), single.data(), sizeof(single));
 }
 
 StartModeStep startModeStep(double historyRate, const HistoryStart& start, double h,

@@ -207,9 +207,7 @@ public:
 
 private:
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
-    /// Tail term i's sum, read from and written to its precision's block.
-    Vec3 tailSum(std::size_t i) const;
-    void storeTailSum(std::size_t i, const Vec3& sum);
+    using SingleSum = std::array<float, 3>; ///< a single-precision term's sum, copied in and out
     double* doubleTail() const { return state_ + 3 * (layout_.window + 1); }
     unsigned char* singleTail() const {
         return reinterpret_cast<unsigned char*>(doubleTail() + 3 * layout_.doubleTerms());
