@@ -185,6 +185,18 @@ TEST_F(BadField, UniformAndPatchValues) {
     EXPECT_TRUE(field.patchValues[1].empty());
 }
 
+// A time-dependent inlet as pimpleFoam writes it (foamCases/transientJet): the Function1's
+// coefficients are a sub-dictionary of entries, skipped up to the patch's value.
+TEST_F(BadField, PatchWithSubDictionaryEntries) {
+    writeField("volScalarField",
+               "internalField uniform 1;\nboundaryField\n{\n inlet\n {\n"
+               "  type uniformFixedValue;\n  uniformValue sine;\n  uniformValueCoeffs\n  {\n"
+               "   t0 0;\n   amplitude constant -0.3;\n   level constant 1.5;\n  }\n"
+               "  value uniform 2.25;\n }\n \"(outlet|walls|sides)\" { type zeroGradient; }\n}\n");
+    const auto field = readFoamVolField<double>(directory_ / "0", "p", mesh_);
+    EXPECT_EQ(field.patchValues[0], std::vector<double>(4, 2.25));
+}
+
 // A noSlip wall writes no value (simpleFoam's U of impingingJet's plate): it is zero, not left
 // to the cells as zeroGradient (which put U ≈ 0.7 m/s at the plate's points in the jet).
 TEST_F(BadField, NoSlipWallIsAtRest) {

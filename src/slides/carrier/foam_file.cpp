@@ -310,9 +310,11 @@ void FoamFile::skipValue() {
     std::string previous;
     while (!atEnd()) {
         const char c = text_[position_];
-        if (c == ';' && depth == 0) {
+        if (c == ';') { // ends the entry, or an entry of a sub-dictionary inside it
             ++position_;
-            return;
+            if (depth == 0) return;
+            previous.clear();
+            continue;
         }
         if (c == '{' || c == '(' || c == '[') {
             ++depth;
