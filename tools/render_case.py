@@ -4,7 +4,8 @@
     python3 tools/render_case.py CASE/slides out.png [--normal x|y|z]
 
 Shows the last frame of particles.pvd that holds particles (points coloured by speed) in front
-of a slice of carrier.vti through the jet (coloured by magU), seen from the side with a parallel
+of a slice of carrier.vti through the jet (coloured by magU; --no-carrier leaves it out, e.g.
+for an unsteady carrier, whose carrier.vti holds time 0), seen from the side with a parallel
 camera; the slice is the lattice plane through the fastest gas, moved behind the particles as a
 backdrop. The title and colour bars have their own bands above and below the picture.
 The jet axis is the lattice axis of the largest mean |U| component; the view looks along the
@@ -198,6 +199,9 @@ def particle_actor(particles):
 def main():
     parser = run_output_arguments(__doc__)
     parser.add_argument("--normal", choices=AXES, help="view along this axis")
+    parser.add_argument("--no-carrier", action="store_true",
+                        help="particles alone, without carrier.vti: an unsteady carrier's "
+                        "carrier.vti is its state at time 0, not at the frame's time")
     parser.add_argument("--time", type=float, help="show the frame nearest this time [s] "
                         "(default: the last frame)")
     arguments = parser.parse_args()
@@ -206,8 +210,9 @@ def main():
                                     arguments.time)
     particles = read(vtkXMLPolyDataReader, frame_file)
     carrier_file = os.path.join(arguments.output_directory, "carrier.vti")
-    # No carrier.vti: a run without gas (carrier none), particles alone.
-    carrier = read(vtkXMLImageDataReader, carrier_file) if os.path.exists(carrier_file) else None
+    # No carrier.vti (a run without gas, carrier none) or --no-carrier: particles alone.
+    carrier = (read(vtkXMLImageDataReader, carrier_file)
+               if os.path.exists(carrier_file) and not arguments.no_carrier else None)
 
     # The picture in the middle band; title and colour bars in a renderer of their own over
     # the whole window, so they never cover the picture.
