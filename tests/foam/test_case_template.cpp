@@ -1,5 +1,5 @@
 // ctest-labels: config injection
-// foam-cases: impingingJet impingingJet3d planarJet
+// foam-cases: impingingJet impingingJet3d planarJet transientJet
 // `slides-track --init CASE` (config/case_template.h) writes a constant/slidesProperties that
 // runs as written, for every shipped case: the solved OpenFOAM runs (wedge, 3-D and 2-D meshes)
 // get their patch names, their mesh's box (1 % of its largest extent wider on every side) as
@@ -137,10 +137,13 @@ TEST_P(CaseTemplateOfSolvedRun, HoldsTheMeshAndRunsAsWritten) {
 // impingingJet: 2 mm nozzle at x = 0 on the axis, plate at x = 0.06 m, r ≤ 0.04 m; the nozzle
 // patch is found by its inflow (25 m/s, the entrainment's is slower). planarJet: the half slot
 // y ∈ [0, 1 mm] beside the symmetry plane, so the disc (the slot's line) has radius 0.5 mm.
+// transientJet: its latest level; of the two slot halves (2 mm each, the same inflow at t = 0.2 s,
+// where the sine of the pulse is zero) the first patch, slotLower.
 INSTANTIATE_TEST_SUITE_P(ShippedRuns, CaseTemplateOfSolvedRun,
                          ::testing::Values(SolvedRun{"impingingJet", "nozzle", true, 2e-3},
                                            SolvedRun{"impingingJet3d", "nozzle", false, 0},
-                                           SolvedRun{"planarJet", "slot", false, 0.5e-3}),
+                                           SolvedRun{"planarJet", "slot", false, 0.5e-3},
+                                           SolvedRun{"transientJet", "slotLower", false, 1e-3}),
                          [](const auto& info) { return std::string(info.param.run); });
 
 TEST(CaseTemplate, OnAWedgeOnlyAWallAcrossTheAxisBecomesAPlane) {
