@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 #include <unistd.h>
@@ -183,6 +185,31 @@ TEST_F(BadField, UniformAndPatchValues) {
     EXPECT_EQ(field.cells, std::vector<double>(12, 3.5));
     EXPECT_EQ(field.patchValues[0], std::vector<double>(4, 2.0));
     EXPECT_TRUE(field.patchValues[1].empty());
+}
+
+// Numbers read as strtod reads them, bit for bit: the fast path (std::from_chars) and what it
+// leaves to strtod (a '+' sign, hexadecimal, subnormals).
+TEST_F(BadField, NumbersAreReadAsStrtodReadsThem) {
+    const std::vector<std::string> numbers{"+1.5",
+                                           "0x1p-3",
+                                           "4.9e-324",
+                                           "1e-310",
+                                           "0.1",
+                                           "-2.5e-3",
+                                           "1.7976931348623157e308",
+                                           "3",
+                                           "-0",
+                                           "123456789.123456789",
+                                           "2.2250738585072014e-308",
+                                           "7e-1"};
+    std::string list = "internalField nonuniform List<scalar> 12\n(\n";
+    for (const std::string& number : numbers) list += number + "\n";
+    writeField("volScalarField", list + ");\nboundaryField { \".*\" { type zeroGradient; } }\n");
+    const auto field = readFoamVolField<double>(directory_ / "0", "p", mesh_);
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+        const double expected = std::strtod(numbers[i].c_str(), nullptr);
+        EXPECT_EQ(std::memcmp(&field.cells[i], &expected, sizeof expected), 0) << numbers[i];
+    }
 }
 
 // A time-dependent inlet as pimpleFoam writes it (foamCases/transientJet): the Function1's

@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -109,12 +110,13 @@ void FoamFile::fail(const std::string& message) const {
 void FoamFile::skipBlank() {
     while (position_ < text_.size()) {
         const char c = text_[position_];
+        const char next = position_ + 1 < text_.size() ? text_[position_ + 1] : '\0';
         if (std::isspace(static_cast<unsigned char>(c))) {
             ++position_;
-        } else if (text_.compare(position_, 2, "//") == 0) {
+        } else if (c == '/' && next == '/') {
             position_ = text_.find('\n', position_);
             if (position_ == std::string::npos) position_ = text_.size();
-        } else if (text_.compare(position_, 2, "/*") == 0) {
+        } else if (c == '/' && next == '*') {
             const std::size_t end = text_.find("*/", position_ + 2);
             position_ = end == std::string::npos ? text_.size() : end + 2;
         } else {
@@ -187,8 +189,16 @@ long FoamFile::label() {
 double FoamFile::scalar() {
     skipBlank();
     const char* start = text_.c_str() + position_;
-    char* end = nullptr;
-    const double value = std::strtod(start, &end);
+    // std::from_chars rounds correctly, as strtod does, in a fraction of its time (ASCII fields
+    // of a time series); strtod reads what it leaves (a '+' sign, hexadecimal, out of range).
+    double value = 0;
+    const auto [parsed, error] = std::from_chars(start, text_.c_str() + text_.size(), value);
+    const char* end = parsed;
+    if (error != std::errc() || end == start || (*end && !isDelimiter(*end))) {
+        char* strtodEnd = nullptr;
+        value = std::strtod(start, &strtodEnd);
+        end = strtodEnd;
+    }
     if (end == start || (*end && !isDelimiter(*end)))
         fail("bad token '" +
              text_.substr(position_, std::min<std::size_t>(20, text_.size() - position_)) +
