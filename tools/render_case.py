@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Renders a run's output to a PNG, for checking a run without opening ParaView.
 
-    python3 tools/render_case.py CASE/slides out.png [--normal x|y|z]
+    python3 tools/render_case.py CASE/slides out.png [--time T] [--normal x|y|z] [--no-carrier]
 
 Shows the last frame of particles.pvd that holds particles (points coloured by speed) in front
 of a slice of carrier.vti through the jet (coloured by magU; --no-carrier leaves it out, e.g.
