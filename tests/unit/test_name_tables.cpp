@@ -10,6 +10,7 @@
 #include "slides/integrate/integrator.h"
 #include "slides/io/particle_fields.h"
 #include "slides/physics/adhesion.h"
+#include "slides/physics/coulomb.h"
 #include "slides/physics/dispersion.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/heat_transfer.h"
@@ -51,6 +52,7 @@ TEST(NameTables, HistoryModels) { expectRoundTrip(historyModelNames()); }
 TEST(NameTables, LiftModels) { expectRoundTrip(liftModelNames()); }
 TEST(NameTables, DispersionModels) { expectRoundTrip(dispersionModelNames()); }
 TEST(NameTables, HeatTransferModels) { expectRoundTrip(heatTransferModelNames()); }
+TEST(NameTables, CoulombModels) { expectRoundTrip(coulombModelNames()); }
 TEST(NameTables, PhysicsTerms) { expectRoundTrip(physicsTermNames()); }
 TEST(NameTables, Integrators) { expectRoundTrip(integratorNames()); }
 TEST(NameTables, CollisionModels) { expectRoundTrip(collisionModelNames()); }

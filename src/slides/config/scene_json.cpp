@@ -151,7 +151,11 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"E", vec(charged.electricField)},
         {"B", vec(charged.magneticField)},
         {"charge",
-         {{"model", nameOf(chargeModelNames(), charged.charge)}, {"value", charged.chargeValue}}}};
+         {{"model", nameOf(chargeModelNames(), charged.charge)}, {"value", charged.chargeValue}}},
+        {"coulomb",
+         {{"model", nameOf(coulombModelNames(), charged.coulomb.model)},
+          {"cutoff", charged.coulomb.cutoff},
+          {"permittivity", charged.coulomb.permittivity}}}};
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},

@@ -402,6 +402,19 @@ std::vector<KeyDeclaration> declareKeys() {
          "charge density [C/m²])."},
         {"physics.electromagnetic.charge.value", K::scalar, "C or C/m^2", "0", {}, R::any,
          "The charge (fixed) or surface charge density (surface)."},
+        {"physics.electromagnetic.coulomb", K::dictionary, "-", "-", {}, R::any,
+         "Coulomb forces between the charged particles (Eq. 2.94, physics/coulomb.h); not "
+         "chosen by the scene analysis."},
+        {"physics.electromagnetic.coulomb.model", K::word, "-", "none",
+         namesOf(coulombModelNames()), R::any,
+         "shifted: Coulomb's law between every pair closer than the cutoff, truncated by the "
+         "shift (1 − r²/r_c²)² of Eq. 2.97 (potential and force continuous, zero at the cutoff), "
+         "applied as velocity-Verlet half kicks around the stream step (second order); needs "
+         "model lorentz (E and B may be zero)."},
+        {"physics.electromagnetic.coulomb.cutoff", K::scalar, "m", "1e-3", {}, R::positive,
+         "Truncation distance r_c of Eq. 2.97, also the cell edge of the pair search.", 1e-9},
+        {"physics.electromagnetic.coulomb.permittivity", K::scalar, "-", "1", {}, R::positive,
+         "Relative permittivity ε_r of the gas: k = 1/(4π ε0 ε_r).", 1},
 
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "-", {}, R::positive,

@@ -662,6 +662,14 @@ void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
     fields.magneticField = keys.vector(base + "B");
     fields.charge = *valueNamed(chargeModelNames(), keys.word(base + "charge.model"));
     fields.chargeValue = keys.scalar(base + "charge.value");
+    fields.coulomb.model = *valueNamed(coulombModelNames(), keys.word(base + "coulomb.model"));
+    fields.coulomb.cutoff = keys.scalar(base + "coulomb.cutoff");
+    fields.coulomb.permittivity = keys.scalar(base + "coulomb.permittivity");
+    // The particles carry their charges with the Lorentz step (integrate/charged_motion.h).
+    if (fields.coulomb.on() && !fields.on())
+        keys.fail(base + "coulomb.model", "Coulomb forces act between charged particles, which "
+                                          "physics.electromagnetic.model lorentz gives (E and B "
+                                          "may be zero)");
     if (!fields.on()) return;
     if (physics.unsteadyForces())
         keys.fail(base + "model", "the Lorentz step does not take the unsteady forces (history, "

@@ -5,7 +5,8 @@
 // particle) or proportional to its surface, q = σ 4πR² (a surface charge density σ, as
 // triboelectric and corona charging give). Per unit mass the force is g_E + v × Ω with
 // g_E = qE/m and the signed gyration vector Ω = qB/m (|Ω| the cyclotron frequency, Larmor radius
-// |v⊥|/|Ω|); integrate/lorentz_flow.h integrates it exactly together with the drag.
+// |v⊥|/|Ω|); integrate/lorentz_flow.h integrates it exactly together with the drag. The charged
+// particles' Coulomb forces on each other (Eq. 2.94–2.97) are physics/coulomb.h's.
 //
 //     physics { electromagnetic { model lorentz;            // none | lorentz
 //                                 E (0 0 1e5);               // V/m
@@ -18,6 +19,7 @@
 #pragma once
 
 #include "slides/core/vector.h"
+#include "slides/physics/coulomb.h"
 
 #include <array>
 #include <numbers>
@@ -54,7 +56,8 @@ struct ElectromagneticSettings {
     Vec3 electricField = Vec3::Zero(); ///< E [V/m]
     Vec3 magneticField = Vec3::Zero(); ///< B [T]
     ChargeModel charge = ChargeModel::fixed;
-    double chargeValue = 0; ///< q [C] (fixed) or σ [C/m²] (surface)
+    double chargeValue = 0;  ///< q [C] (fixed) or σ [C/m²] (surface)
+    CoulombSettings coulomb; ///< the particles' forces on each other (physics/coulomb.h)
 
     bool on() const { return model != ElectromagneticModel::none; }
 

@@ -37,6 +37,9 @@ void requireParallelSupport(const RunOptions& options, const Scene& scene) {
     const std::string dictionary = scene.dictionaryFile.string();
     if (scene.collisions.model != CollisionModel::none)
         refuse(dictionary, "collisions.model", "colliding particles (ghosts across ranks)");
+    if (scene.physics.electromagnetic.coulomb.on())
+        refuse(dictionary, "physics.electromagnetic.coulomb.model",
+               "Coulomb forces between particles (ghosts across ranks)");
     // Ranks sample the carrier together, call for call; adaptive sub-steps differ per rank.
     if (scene.time.integrator == Integrator::adaptiveRungeKutta)
         refuse(dictionary, "time.integrator", "adaptiveRungeKutta (sub-steps differ per rank)");

@@ -48,6 +48,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
             throw std::logic_error("electromagnetic forces with unsteady forces: refused when "
                                    "the scene is read (config/scene_reader.cpp)");
         chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
+        if (scene.physics.electromagnetic.coulomb.on())
+            coulomb_.emplace(scene.physics.electromagnetic.coulomb, scene.particles.density);
     }
     if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
         if (maxeyRiley_ || exchange)
@@ -145,6 +147,7 @@ void Stepper::buildStages() {
     stages_.push_back(&Stepper::inject);
     if (plane_) stages_.push_back(&Stepper::holdInPlane);
     if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
+    if (coulomb_) stages_.push_back(&Stepper::kickByCoulombForces);
     // The paths' starts, for impulse collisions, heating and meeting surfaces at the touch.
     if (collisions_ || heating_.on() || surfaces_.meetsAtTouch())
         stages_.push_back(&Stepper::recordPathStarts);
@@ -156,6 +159,7 @@ void Stepper::buildStages() {
     if (heating_.on()) stages_.push_back(&Stepper::heat);
     if (collisions_) stages_.push_back(&Stepper::collide);
     if (softSpheres_) stages_.push_back(&Stepper::kickByNewContacts);
+    if (coulomb_) stages_.push_back(&Stepper::kickByCoulombForces);
     if (exchange_) stages_.push_back(&Stepper::exchangeAcrossRanks);
     stages_.push_back(&Stepper::meetSurfaces);
     // Contacts of particles in the plane act in it; a rebound off a surface may leave it.
@@ -191,6 +195,11 @@ void Stepper::kickByContacts(double) {
     cloud_.contactForce.resize(cloud_.size(), Vec3::Zero());
     cloud_.contactTorque.resize(cloud_.size(), Vec3::Zero());
     softSpheres_->halfKick(cloud_, stepLengths_);
+}
+
+void Stepper::kickByCoulombForces(double) {
+    coulomb_->evaluate(cloud_);
+    coulomb_->halfKick(cloud_, stepLengths_);
 }
 
 void Stepper::recordPathStarts(double) {

@@ -32,6 +32,9 @@
 //      velocity and spin by half a step before 3 and, computed anew at the step's end, after
 //      it: velocity Verlet with the stream step as its drift (second order, symplectic
 //      without a gas);
+//   3c'. with Coulomb forces between charged particles (collide/coulomb_forces.h), the same
+//      velocity-Verlet kicks: half a step by the force at the step's start before 3 and by the
+//      force at its end after it (evaluated once per position: the end's serves the next start);
 //   3d. in a parallel run, each particle goes to the rank whose part of the mesh holds it
 //      (run/rank_exchange.h), so the next stage finds its location current;
 //   4. a particle whose path touched a surface or the deposit is absorbed, sticks or rebounds
@@ -49,6 +52,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/collide/coulomb_forces.h"
 #include "slides/collide/particle_collisions.h"
 #include "slides/collide/soft_sphere_collisions.h"
 #include "slides/config/scene.h"
@@ -103,6 +107,9 @@ public:
         return softSpheres_ ? &*softSpheres_ : nullptr;
     }
 
+    /// The Coulomb forces, when physics.electromagnetic.coulomb is on.
+    const CoulombForces* coulombForces() const { return coulomb_ ? &*coulomb_ : nullptr; }
+
     RunCounters counters() const;
     /// The state now, for the writers (io/run_snapshot.h).
     RunSnapshot snapshot() const;
@@ -127,6 +134,8 @@ private:
     void equipNewParticles(std::size_t from);
     /// 3c (soft spheres). The contact loads kick velocity and spin by half a step.
     void kickByContacts(double h);
+    /// 3c'. The Coulomb forces at the particles' positions kick their velocities by half a step.
+    void kickByCoulombForces(double h);
     /// The paths' starts (positions, velocities) before the stream step.
     void recordPathStarts(double h);
     /// 2. the carrier sampled once for the whole cloud at t.
@@ -186,6 +195,7 @@ private:
     std::optional<ChargedMotion> chargedMotion_;      ///< with electromagnetic forces
     std::optional<ParticleCollisions> collisions_;    ///< when collisions.model is impulse
     std::optional<SoftSphereCollisions> softSpheres_; ///< when collisions.model is softSphere
+    std::optional<CoulombForces> coulomb_;            ///< with electromagnetic.coulomb
     std::optional<PlaneConstraint> plane_;            ///< when the carrier is 2-D
     SurfaceImpacts surfaces_;
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
