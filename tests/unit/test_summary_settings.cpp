@@ -80,6 +80,17 @@ TEST(SummaryElectromagnetic, ReportsTheFieldsAndTheChargeModel) {
     EXPECT_EQ(fields["B"], nlohmann::json::array({0.0, 0.0, 0.25}));
     EXPECT_EQ(fields["charge"]["model"], "surface");
     EXPECT_EQ(fields["charge"]["value"], 2e-5);
+    EXPECT_EQ(fields["coulomb"]["model"], "none");
+}
+
+TEST(SummaryElectromagnetic, ReportsTheCoulombTruncation) {
+    // physics/coulomb.h: the model, cut-off and relative permittivity as given.
+    const nlohmann::json coulomb =
+        settingsWith("physics { electromagnetic { model lorentz; coulomb { model shifted; cutoff "
+                     "2e-3; permittivity 1.5; } } }")["physics"]["electromagnetic"]["coulomb"];
+    EXPECT_EQ(coulomb["model"], "shifted");
+    EXPECT_EQ(coulomb["cutoff"], 2e-3);
+    EXPECT_EQ(coulomb["permittivity"], 1.5);
 }
 
 } // namespace

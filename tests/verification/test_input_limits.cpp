@@ -32,6 +32,15 @@ const test::BrokenCase limitCases[] = {
      "    type        planePoiseuille;\n"
      "    planePoiseuilleCoeffs { centrelineVelocity 1; halfWidth 1e-300; }",
      1, "key 'carrier.planePoiseuilleCoeffs.halfWidth': the gas speed U|1 − y²/h²| reaches inf"},
+    // A cut-off of 1e-300 m makes the pair search's cells past any count (collide/cell_grid.h).
+    {"coulombCutoffBelowAnyParticle", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; coulomb { model shifted; cutoff 1e-300; } }",
+     1, "key 'physics.electromagnetic.coulomb.cutoff': must be at least 1e-09"},
+    {"permittivityBelowTheVacuums", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; coulomb { model shifted; permittivity 0.5; } }",
+     1, "key 'physics.electromagnetic.coulomb.permittivity': must be at least 1"},
     {"historyAccuracyPastDoublePrecision", "    drag        haiderLevenspiel;",
      "    drag        haiderLevenspiel;\n    history { model basset; accuracy 1e-300; }", 1,
      "key 'physics.history.accuracy': must be at least 1e-10"},

@@ -258,6 +258,14 @@ const test::BrokenCase brokenCases[] = {
     {"electromagneticWithUnsteadyForces", "    buoyancy    on;\n}\n",
      "    buoyancy    on;\n    addedMass   on;\n    electromagnetic { model lorentz; }\n}\n", 2,
      "key 'physics.electromagnetic.model': the Lorentz step does not take the unsteady forces"},
+    {"coulombCutoffNotPositive", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; coulomb { model shifted; cutoff 0; } }",
+     1, "key 'physics.electromagnetic.coulomb.cutoff': must be a positive number"},
+    {"coulombWithoutCharges", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n    electromagnetic { coulomb { model shifted; } }", 1,
+     "key 'physics.electromagnetic.coulomb.model': Coulomb forces act between charged "
+     "particles, which physics.electromagnetic.model lorentz gives"},
     {"latticeOfTooFewSites", "    mode            rate;",
      "    mode            lattice;\n    latticeCoeffs { spacing 1e-3; sites (10 10 10); }", 1,
      "key 'injection.latticeCoeffs.sites': hold fewer sites than particles.count"},
