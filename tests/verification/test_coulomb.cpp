@@ -10,8 +10,10 @@
 //    centre of mass keep the period of Kepler's third law with the Coulomb constant and their
 //    radius, to the second order of the step; a small like-charged cloud that expands through
 //    the cut-off keeps its energy (kinetic + pair potential) to the second order of the step;
-//    a run of 300 particles is the same bit for bit at any thread count and across a restart.
+//    a run of 300 particles is the same bit for bit at any thread count and across a restart;
+//  - the scene analysis's default step: a tenth of the Coulomb time scale of a touching pair.
 #include "../support/test_scenes.h"
+#include "slides/analysis/scene_analysis.h"
 #include "slides/carrier/no_gas.h"
 #include "slides/collide/coulomb_forces.h"
 #include "slides/physics/contact_pair.h"
@@ -319,6 +321,26 @@ TEST(CoulombCloud, IsTheSameForAnyThreadCountOrRestart) {
     for (std::size_t i = 0; i < initial.size(); ++i)
         moved = std::max(moved, (oneThread.position[i] - initial.position[i]).norm());
     EXPECT_GT(moved, 1e-6);
+}
+
+TEST(CoulombTimeStep, IsATenthOfTheTouchingPairsTimeScale) {
+    // 1 nC on R = 50 µm: τ = √(m (2R)³/(k q²)) = 3.8e-7 s, far below the other limits of a
+    // particle in a uniform 10 m/s stream.
+    Scene scene = test::singleParticleScene();
+    scene.physics.electromagnetic.model = ElectromagneticModel::lorentz;
+    scene.physics.electromagnetic.chargeValue = 1e-9;
+    scene.physics.electromagnetic.coulomb = shifted(1e-3);
+    scene.time.dt = 0;
+    scene.time.endTime = 1e-2;
+    const test::UniformFlow gas(Vec3(10, 0, 0));
+    const SceneAnalysis analysis = analyseScene(scene, gas);
+    const double tau =
+        std::sqrt(mass * std::pow(2 * radius, 3) / (shifted(1e-3).coulombConstant() * 1e-9 * 1e-9));
+    EXPECT_NEAR(tau, 3.82e-7, 0.01e-7);
+    EXPECT_EQ(analysis.timeStepLimitedBy, "coulombTime");
+    // Rounded down to two digits: at most 10 % below.
+    EXPECT_LE(analysis.suggestedTimeStep, tau / stepsPerCoulombTime);
+    EXPECT_GT(analysis.suggestedTimeStep, 0.9 * tau / stepsPerCoulombTime);
 }
 
 } // namespace

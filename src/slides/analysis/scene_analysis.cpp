@@ -459,6 +459,18 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
                 : softContactDuration(pair, softContactLawOf(resolved.collisions), referenceSpeed_);
         limits.push_back({"contactDuration", duration / stepsPerSoftContact});
     }
+    const ElectromagneticSettings& charged = resolved.physics.electromagnetic;
+    if (charged.on() && charged.coulomb.on() && radiusMax_ > 0) {
+        // A fixed charge pushes the smallest particles hardest; a surface charge the largest.
+        double shortest = INFINITY;
+        for (const double radius : {radiusMin_, radiusMax_})
+            shortest =
+                std::min(shortest, coulombTime(charged.coulomb, charged.chargeOf(radius),
+                                               sphereMass(radius, resolved.particles.density),
+                                               std::min(2 * radius, charged.coulomb.cutoff)));
+        if (std::isfinite(shortest))
+            limits.push_back({"coulombTime", shortest / stepsPerCoulombTime});
+    }
     limits.push_back({"outputInterval", resolved.output.interval});
     limits.push_back({"endTime", resolved.time.endTime});
     const auto smallest =

@@ -28,9 +28,10 @@
 // an unsteady force on), the Lagrangian eddy time (dispersion; the eddy model is verified up
 // to dt = 2 T_L), a quarter of the mean time between collisions (collisions), a
 // stepsPerSoftContact-th of the shortest Hertz contact (softSphere: the smallest spheres at
-// U_ref, Eq. 2.59), the output interval; each at the 1st percentile of the path points, so that
-// one point does not set it. A scene without gas (carrier none) is not traced: its auto terms
-// stay off and its time step is the one given.
+// U_ref, Eq. 2.59), a stepsPerCoulombTime-th of the Coulomb time scale of two touching
+// particles (physics/coulomb.h: the smallest and the largest), the output interval; each at the 1st
+// percentile of the path points, so that one point does not set it. A scene without gas (carrier
+// none) is not traced: its auto terms stay off and its time step is the one given.
 //
 //     physics { autoThreshold 0.01; }   // time { dt ...; } given: the analysis only reports
 #pragma once
@@ -49,6 +50,9 @@ namespace slides {
 inline constexpr double flowChangePerStep = 0.02;
 /// Steps over the shortest soft-sphere contact (softSphere collisions; Eq. 2.59).
 inline constexpr double stepsPerSoftContact = 20;
+/// Steps over the Coulomb time scale √(m s³/(k q²)) of two touching particles (Coulomb forces;
+/// velocity Verlet's energy error there is then about 0.6 % a close pair).
+inline constexpr double stepsPerCoulombTime = 10;
 
 /// One row of the decision table.
 struct TermDecision {

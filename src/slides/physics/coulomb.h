@@ -99,4 +99,13 @@ inline CoulombPair coulombPair(const CoulombSettings& settings, double chargeI, 
             std::min(radiusI + radiusJ, settings.cutoff)};
 }
 
+/// The time scale of a pair of charges q at distance s pushing a particle of mass m,
+/// τ = √(m s³/(k q²)) [s] (infinite without charge): velocity Verlet's energy error is about
+/// 0.6 (h/τ)² (tests/verification/test_coulomb.cpp).
+inline double coulombTime(const CoulombSettings& settings, double charge, double mass,
+                          double distance) {
+    return std::sqrt(mass * distance * distance * distance /
+                     (settings.coulombConstant() * charge * charge));
+}
+
 } // namespace slides
