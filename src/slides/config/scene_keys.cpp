@@ -419,8 +419,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"time", K::dictionary, "-", "", {}, R::any, "Time control."},
         {"time.dt", K::scalar, "s", "-", {}, R::positive,
          "Time step; default: the scene analysis's choice from the particles' paths (flow "
-         "scale, cell crossing, response time, eddy lifetime, collision time). At most 1e9 steps "
-         "to time.endTime (run/run_limits.h)."},
+         "scale, cell crossing, response time, eddy lifetime, collision time, Coulomb time). At "
+         "most 1e9 steps to time.endTime (run/run_limits.h)."},
         {"time.endTime", K::scalar, "s", "", {}, R::positive, "Latest end of the run."},
         {"time.stopWhenAllDone", K::boolean, "-", "yes", {}, R::any,
          "Stop before endTime once every particle is injected and has arrived or escaped."},
