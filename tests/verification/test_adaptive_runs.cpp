@@ -108,8 +108,12 @@ TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
     // with it to TOL = 1e-8 of the particle's path length.
     Scene scene = test::singleParticleScene();
     scene.physics.drag = DragModel::stokes;
-    scene.physics.electromagnetic = {ElectromagneticModel::lorentz, Vec3(1, 0, 0), Vec3(0, 0, 0.5),
-                                     ChargeModel::fixed, 1.3e-7};
+    scene.physics.electromagnetic = {ElectromagneticModel::lorentz,
+                                     Vec3(1, 0, 0),
+                                     Vec3(0, 0, 0.5),
+                                     ChargeModel::fixed,
+                                     1.3e-7,
+                                     CoulombSettings{}};
     const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
                                           scene.fluid.density, scene.fluid.kinematicViscosity);
     scene.time.dt = tau;
