@@ -231,6 +231,27 @@ TEST(HistoryWindowTail, StaysWithinItsAccuracyOverALongRun) {
     EXPECT_LT(error, accuracy * terminalSlip);
 }
 
+/// Max |v_a − v_b| over `steps` steps of h of two memories fed the same inputs: the light
+/// particle released 0.3 m/s slower than still gas, under gravity.
+template <typename MemoryA, typename MemoryB>
+double maxDeviation(MemoryA& a, MemoryB& b, double h, long steps) {
+    const Case& c = light;
+    SlipStep step;
+    step.h = h;
+    step.dragRate = c.dragRate();
+    step.historyRate = c.historyRate();
+    step.forceStart = step.forceEnd = Vec3(0, 0, c.gravity());
+    Vec3 va(0.3, 0, 0), vb = va;
+    HistoryStart startA{-va, 0, Vec3::Zero()}, startB = startA;
+    double deviation = 0;
+    for (long n = 0; n < steps; ++n) {
+        va = advanceWithHistory(step, va, startA, a).velocity;
+        vb = advanceWithHistory(step, vb, startB, b).velocity;
+        deviation = std::max(deviation, (va - vb).norm());
+    }
+    return deviation;
+}
+
 TEST(HistoryWindowTail, FollowsTheFullMemoryReference) {
     // Same steps, same inputs, 2·10⁴ steps: the two differ only by the tail's kernel error, so
     // |v_tail − v_ref| ≤ accuracy × (history term ≤ terminal slip) for each accuracy target.
@@ -243,19 +264,7 @@ TEST(HistoryWindowTail, FollowsTheFullMemoryReference) {
         std::vector<double> tailState(layout.doubles(), 0.0);
         WindowTailHistory windowTail(layout, tailState.data());
         FullHistory full(h, 2);
-        SlipStep step;
-        step.h = h;
-        step.dragRate = c.dragRate();
-        step.historyRate = c.historyRate();
-        step.forceStart = step.forceEnd = Vec3(0, 0, c.gravity());
-        Vec3 vTail(0.3, 0, 0), vFull = vTail;
-        HistoryStart startTail{-vTail, 0, Vec3::Zero()}, startFull = startTail;
-        double deviation = 0;
-        for (long n = 0; n < steps; ++n) {
-            vTail = advanceWithHistory(step, vTail, startTail, windowTail).velocity;
-            vFull = advanceWithHistory(step, vFull, startFull, full).velocity;
-            deviation = std::max(deviation, (vTail - vFull).norm());
-        }
+        const double deviation = maxDeviation(windowTail, full, h, steps);
         std::printf("accuracy %.0e: window %d, %zu terms, max |v_tail − v_ref| %.2e m/s\n",
                     accuracy, layout.window, layout.tail.size(), deviation);
         EXPECT_LT(deviation, accuracy * terminalSlip);
@@ -281,19 +290,7 @@ TEST(HistoryWindowTail, SinglePrecisionSumsStayWithinATenthOfTheAccuracy) {
         std::vector<double> mixedState(mixed.doubles(), 0.0), doubleState(allDouble.doubles(), 0.0);
         WindowTailHistory mixedMemory(mixed, mixedState.data());
         WindowTailHistory doubleMemory(allDouble, doubleState.data());
-        SlipStep step;
-        step.h = h;
-        step.dragRate = c.dragRate();
-        step.historyRate = c.historyRate();
-        step.forceStart = step.forceEnd = Vec3(0, 0, c.gravity());
-        Vec3 vMixed(0.3, 0, 0), vDouble = vMixed;
-        HistoryStart startMixed{-vMixed, 0, Vec3::Zero()}, startDouble = startMixed;
-        double deviation = 0;
-        for (long n = 0; n < steps; ++n) {
-            vMixed = advanceWithHistory(step, vMixed, startMixed, mixedMemory).velocity;
-            vDouble = advanceWithHistory(step, vDouble, startDouble, doubleMemory).velocity;
-            deviation = std::max(deviation, (vMixed - vDouble).norm());
-        }
+        const double deviation = maxDeviation(mixedMemory, doubleMemory, h, steps);
         std::printf("accuracy %.0e: %zu of %zu terms single, %zu against %zu bytes, max |Δv| "
                     "%.2e m/s (%.1e of the terminal slip)\n",
                     accuracy, mixed.singleTerms, mixed.tail.size(), mixed.doubles() * 8,
