@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
-#include <numeric>
 
 namespace slides {
 
@@ -226,15 +225,16 @@ ExponentialSum ExponentialSum::fit(double window, double horizon, double accurac
     } else {
         while (lumpedError(lowestY) > part) lowestY -= stepY;
     }
-    ExponentialSum sum;
+    ExponentialSum sum; // slowest term first
+    if (lowRates == LowRates::lumped) {
+        const LumpedNodes lumped(amplitudeAt(lowestY), std::exp(lowestY), stepY);
+        sum.amplitude.push_back(lumped.amplitude);
+        sum.timescale.push_back(1 / lumped.rate);
+    }
     for (double y = lowestY; y <= std::log(upper / window) + 0.5 * stepY; y += stepY) {
         sum.amplitude.push_back(amplitudeAt(y));
         sum.timescale.push_back(std::exp(-y));
     }
-    if (lowRates == LowRates::truncated) return sum;
-    const LumpedNodes lumped(amplitudeAt(lowestY), std::exp(lowestY), stepY);
-    sum.amplitude.push_back(lumped.amplitude);
-    sum.timescale.push_back(1 / lumped.rate);
     return sum;
 }
 
@@ -277,25 +277,6 @@ Vec3 FullHistory::beginStep(double stepLength) {
     return sum;
 }
 
-namespace {
-
-/// Orders the terms by falling timescale (the lumped lowest rates come first).
-void sortSlowestFirst(ExponentialSum& sum) {
-    std::vector<std::size_t> order(sum.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return sum.timescale[a] > sum.timescale[b];
-    });
-    ExponentialSum sorted;
-    for (const std::size_t i : order) {
-        sorted.amplitude.push_back(sum.amplitude[i]);
-        sorted.timescale.push_back(sum.timescale[i]);
-    }
-    sum = std::move(sorted);
-}
-
-} // namespace
-
 WindowTailLayout WindowTailLayout::make(double h, double horizon, double accuracy,
                                         LowRates lowRates) {
     WindowTailLayout layout;
@@ -310,7 +291,6 @@ WindowTailLayout WindowTailLayout::make(double h, double horizon, double accurac
         std::clamp(static_cast<int>(std::lround(1.0 / stepY)), 1, WindowTailHistory::largestWindow);
     const double windowLength = layout.window * h;
     layout.tail = ExponentialSum::fit(windowLength, horizon, accuracy, lowRates);
-    sortSlowestFirst(layout.tail);
     const double singleLongest = accuracy / 10 * 0x1p24 * h; // 2⁻²⁴ θ/h ≤ accuracy/10
     layout.singleTerms = static_cast<std::size_t>(
         std::count_if(layout.tail.timescale.begin(), layout.tail.timescale.end(),

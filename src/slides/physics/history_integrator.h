@@ -106,7 +106,7 @@ enum class LowRates { lumped, truncated };
 
 /// 1/√ℓ ≈ Σ_i amplitude_i e^{−ℓ/timescale_i} for ℓ in [window, horizon] with relative error
 /// below accuracy: the trapezoid rule in y = ln x of 1/√ℓ = π^(−½)∫ e^{−xℓ} x^(−½) dx, its nodes
-/// below the lowest one lumped into one last term.
+/// below the lowest one lumped into one term; slowest term first.
 struct ExponentialSum {
     std::vector<double> amplitude; ///< [1/√s]
     std::vector<double> timescale; ///< [s]
