@@ -8,7 +8,8 @@
 //     slides-track CASE --check                    # read, analyse, print the decisions only
 //     slides-track --init CASE                     # write a commented
 //     CASE/constant/slidesProperties
-// Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 internal error.
+// Exit status: 0 success, 2 bad input (one message naming file, line and key), 1 a run stopped
+// at a non-finite particle state or an internal error.
 #include "slides/config/case_template.h"
 #include "slides/config/scene_keys.h"
 #include "slides/core/error.h"
@@ -105,6 +106,8 @@ int main(int argc, char** argv) {
         return fail(error, "error", 2);
     } catch (const slides::OutputError& error) {
         return fail(error, "error", 2);
+    } catch (const slides::NonFiniteState& error) {
+        return fail(error, "error", 1);
     } catch (const std::exception& error) {
         return fail(error, "internal error", 1);
     }

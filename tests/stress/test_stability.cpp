@@ -13,8 +13,11 @@
 //    contacts; inelastic ones never gain energy;
 //  - a shear layer of 1 µm (gradient 1e7 1/s) crossed at 1 m/s: bounded velocities at any
 //    step, errors that shrink as the step shrinks;
-//  - a carrier that turns NaN stops the run with an error naming the particle.
+//  - a carrier that turns NaN stops the run with an error naming the particle;
+//  - contact and Coulomb forces at a step a million times their stable one fling particles far
+//    out of the domain, where they escape: the run goes on, no particle is lost.
 #include "../support/test_scenes.h"
+#include "slides/carrier/no_gas.h"
 #include "slides/collide/particle_collisions.h"
 #include "slides/core/name_table.h"
 #include "slides/run/stepper.h"
@@ -23,6 +26,8 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <utility>
 
 namespace slides {
 namespace {
@@ -288,6 +293,63 @@ TEST(BadCarrierValues, StopTheRunWithAnErrorNamingTheParticle) {
         EXPECT_LT(stepper.time(), 0.06) << "stopped where the gas turned NaN";
     }
 }
+
+/// 64 particles (R = 50 µm, ρp = 2500) at rest on a 4×4×4 lattice of 90 µm, every neighbour
+/// overlapping by 10 µm, charged 1 mC each (a million times a real powder's charge), in a
+/// 2 mm box without gas, stepped at 1 ms: a million Hertz contact times (≈ 1 ns) and far more
+/// Coulomb times.
+Scene flungApart(CollisionModel collisions, bool coulomb) {
+    Scene scene = test::singleParticleScene();
+    scene.carrier.type = CarrierType::none;
+    scene.fluid = {0, 0, 293.15};
+    scene.particles.count = 64;
+    scene.particles.material = {1.6e11, 8e10};
+    scene.collisions.model = collisions;
+    scene.collisions.restitution = {RestitutionModel::constant, 0.5, 3};
+    if (coulomb) {
+        scene.physics.electromagnetic.model = ElectromagneticModel::lorentz;
+        scene.physics.electromagnetic.chargeValue = 1e-3;
+        scene.physics.electromagnetic.coulomb.model = CoulombModel::shifted;
+        scene.physics.electromagnetic.coulomb.cutoff = 1e-3;
+    }
+    scene.domain = {Vec3::Constant(-1e-3), Vec3::Constant(1e-3)};
+    scene.time.dt = 1e-3;
+    scene.time.endTime = 1e-2;
+    return scene;
+}
+
+class FlungApart : public ::testing::TestWithParam<std::pair<CollisionModel, bool>> {};
+
+TEST_P(FlungApart, ParticlesFlungFarOutOfTheDomainEscapeAndNoneIsLost) {
+    const auto [collisions, coulomb] = GetParam();
+    const Scene scene = flungApart(collisions, coulomb);
+    const NoGas vacuum;
+    Stepper stepper(scene, vacuum);
+    ParticleCloud cloud;
+    for (int n = 0; n < 64; ++n) {
+        const Vec3 site(n % 4 - 1.5, n / 4 % 4 - 1.5, n / 16 - 1.5);
+        cloud.add(static_cast<ParticleId>(n), 90e-6 * site, Vec3::Zero(), 50e-6);
+    }
+    if (coulomb) cloud.charge.assign(64, 1e-3);
+    RunCounters counters;
+    counters.injected = 64;
+    stepper.resume(counters, std::move(cloud), {});
+    while (!stepper.finished()) stepper.step();
+    EXPECT_GT(stepper.escaped(), 0) << "the test flings nothing out";
+    EXPECT_EQ(stepper.escaped() + static_cast<long>(stepper.cloud().size()), 64);
+    for (const Vec3& x : stepper.cloud().position) EXPECT_TRUE(insideBox(scene.domain, x));
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactAndCoulombForces, FlungApart,
+                         ::testing::Values(std::pair{CollisionModel::softSphere, false},
+                                           std::pair{CollisionModel::none, true},
+                                           std::pair{CollisionModel::softSphere, true}),
+                         [](const auto& info) {
+                             return std::string(info.param.first == CollisionModel::softSphere
+                                                    ? "softSpheres"
+                                                    : "") +
+                                    (info.param.second ? "Coulomb" : "");
+                         });
 
 } // namespace
 } // namespace slides

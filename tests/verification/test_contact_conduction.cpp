@@ -44,7 +44,8 @@ SoftSphereCollisions collisionsOf(const ContactConductionSettings& conduction) {
     particles.density = density;
     particles.specificHeat = specificHeat;
     particles.material = {1.6e11, 8e10}; // K, G
-    return SoftSphereCollisions(collisions, particles, {});
+    return SoftSphereCollisions(collisions, particles, {},
+                                Box{Vec3::Constant(-1), Vec3::Constant(1)});
 }
 
 /// A cloud at rest with temperatures, ready for updateLoads.

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <numeric>
@@ -92,6 +93,9 @@ TEST(CoulombPair, IsCoulombsLawWellInsideTheCutoffAndVanishesAtIt) {
 
 /// count particles in a 5 mm cube, radii 10–40 µm, charges uniform in ±1 pC, ids shuffled (so
 /// the direct sum's order is not the grid's), one pair coincident and one overlapping.
+/// The box the random clouds below lie in.
+const Box cloudBox{Vec3::Zero(), Vec3::Constant(5e-3)};
+
 ParticleCloud randomChargedCloud(int count, unsigned seed) {
     std::mt19937_64 generator(seed);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -112,7 +116,7 @@ ParticleCloud randomChargedCloud(int count, unsigned seed) {
 TEST(CoulombForces, EqualTheDirectSumOverAllPairsWithinTheCutoff) {
     const CoulombSettings settings = shifted(1e-3);
     const ParticleCloud cloud = randomChargedCloud(600, 11);
-    CoulombForces grid(settings, density);
+    CoulombForces grid(settings, density, cloudBox);
     grid.evaluate(cloud);
     const std::size_t count = cloud.size();
     long partners = 0;
@@ -152,6 +156,30 @@ TEST(CoulombForces, EqualTheDirectSumOverAllPairsWithinTheCutoff) {
     EXPECT_LE(total.norm(), 1e-14 * totalScale); // equal and opposite pair forces
 }
 
+// A particle flung out of the domain in a step (a charge far too large for the step, say) is
+// removed at the step's end: until then it neither feels nor exerts a force, however far it went
+// or if its state is no longer finite, and the others' forces are those without it.
+TEST(CoulombForces, LeaveOutTheParticlesOutsideTheDomain) {
+    const CoulombSettings settings = shifted(1e-3);
+    const ParticleCloud inside = randomChargedCloud(300, 13);
+    ParticleCloud withStrays = inside;
+    const Vec3 strays[] = {Vec3(1e300, 0, 0), Vec3(-1e20, 1e20, 3e-3), Vec3(std::nan(""), 0, 0),
+                           cloudBox.max + Vec3(1e-9, 0, 0),
+                           Vec3::Constant(std::numeric_limits<double>::infinity())};
+    for (const Vec3& stray : strays) {
+        withStrays.add(static_cast<ParticleId>(withStrays.size()), stray, Vec3::Zero(), 1e-5);
+        withStrays.charge.push_back(1e-3);
+    }
+    CoulombForces alone(settings, density, cloudBox), amongStrays(settings, density, cloudBox);
+    alone.evaluate(inside);
+    amongStrays.evaluate(withStrays);
+    for (std::size_t i = 0; i < inside.size(); ++i)
+        EXPECT_EQ(amongStrays.forces()[i], alone.forces()[i]) << "particle " << i;
+    for (std::size_t i = inside.size(); i < withStrays.size(); ++i)
+        EXPECT_EQ(amongStrays.forces()[i], Vec3::Zero()) << "stray " << i - inside.size();
+    EXPECT_EQ(amongStrays.potentialEnergy(), alone.potentialEnergy());
+}
+
 TEST(CoulombForces, AreTheSameBitsForAnyThreadCountOrCloudOrder) {
     const CoulombSettings settings = shifted(1e-3);
     const ParticleCloud cloud = randomChargedCloud(600, 12);
@@ -160,8 +188,8 @@ TEST(CoulombForces, AreTheSameBitsForAnyThreadCountOrCloudOrder) {
         reversed.add(cloud.id[n], cloud.position[n], cloud.velocity[n], cloud.radius[n]);
         reversed.charge.push_back(cloud.charge[n]);
     }
-    CoulombForces oneThread(settings, density), twoThreads(settings, density),
-        backwards(settings, density);
+    CoulombForces oneThread(settings, density, cloudBox), twoThreads(settings, density, cloudBox),
+        backwards(settings, density, cloudBox);
     setThreads(1);
     oneThread.evaluate(cloud);
     setThreads(2);
@@ -260,7 +288,7 @@ double expansionEnergyError(double dt, int steps) {
         cloud.add(static_cast<ParticleId>(n), 5e-4 * Vec3(n % 4, n / 4 % 4, n / 16), Vec3::Zero(),
                   radius);
     cloud.charge.assign(64, 1e-12);
-    CoulombForces atStart(scene.physics.electromagnetic.coulomb, density);
+    CoulombForces atStart(scene.physics.electromagnetic.coulomb, density, scene.domain);
     atStart.evaluate(cloud);
     const double initial = atStart.potentialEnergy(); // at rest
     start(stepper, std::move(cloud));

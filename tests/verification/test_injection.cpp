@@ -3,10 +3,11 @@
 // integrate/particle_file.h): the distributions each model produces, checked on 1e5 draws by
 // their moments (tolerance 4 standard errors of the sample, so a correct sampler fails one
 // check in about 16 000) and by the Kolmogorov–Smirnov statistic D_n against its 1 % critical
-// value 1.63/√n; several injectors against the nozzle + injection form (bit for bit) and in the
+// value 1.628/√n; several injectors against the nozzle + injection form (bit for bit) and in the
 // output; a chained run; Chung & Ooi's (2011) test 4 from a case dictionary alone.
 #include "../support/case_runs.h"
 #include "../support/dem_impact.h"
+#include "../support/kolmogorov_smirnov.h"
 #include "../support/test_scenes.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
@@ -32,21 +33,10 @@ namespace slides {
 namespace {
 
 constexpr int draws = 100'000;
-const double ksCritical = 1.63 / std::sqrt(double(draws)); // 1 % level (Smirnov's limit law)
+const double ksCritical = test::kolmogorovSmirnovCritical(draws); // 1 % level
 constexpr double degree = std::numbers::pi / 180;
 
-/// Kolmogorov–Smirnov statistic of the samples against the cumulative distribution F.
-double ksStatistic(std::vector<double> samples, const std::function<double(double)>& F) {
-    std::sort(samples.begin(), samples.end());
-    const double n = double(samples.size());
-    double statistic = 0;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-        const double f = F(samples[i]);
-        statistic =
-            std::max({statistic, std::abs(f - double(i) / n), std::abs(double(i + 1) / n - f)});
-    }
-    return statistic;
-}
+using test::kolmogorovSmirnov;
 
 double mean(const std::vector<double>& values) {
     return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
@@ -590,12 +580,13 @@ TEST(ConeInjection, HollowConeIsUniformOverItsBandOfTheSphereWithNormalSpeeds) {
     const ConeDraws d = coneDraws(cone, 1e-3);
     // Uniform on the spherical band: cos θ uniform on [cos θ_out, cos θ_in] (Archimedes).
     const double c0 = std::cos(cone.outerHalfAngle), c1 = std::cos(cone.innerHalfAngle);
-    EXPECT_LT(ksStatistic(d.cosPolar,
-                          [&](double c) { return std::clamp((c - c0) / (c1 - c0), 0.0, 1.0); }),
+    EXPECT_LT(kolmogorovSmirnov(
+                  d.cosPolar, [&](double c) { return std::clamp((c - c0) / (c1 - c0), 0.0, 1.0); }),
               ksCritical);
-    EXPECT_LT(ksStatistic(d.azimuth,
+    EXPECT_LT(
+        kolmogorovSmirnov(d.azimuth,
                           [](double a) { return (a + std::numbers::pi) / (2 * std::numbers::pi); }),
-              ksCritical);
+        ksCritical);
     EXPECT_GE(*std::min_element(d.cosPolar.begin(), d.cosPolar.end()), c0 - 1e-12);
     EXPECT_LE(*std::max_element(d.cosPolar.begin(), d.cosPolar.end()), c1 + 1e-12);
     // Speed N(30, 3): mean to 4 σ/√n, standard deviation to 4 σ/√(2n).
@@ -605,7 +596,7 @@ TEST(ConeInjection, HollowConeIsUniformOverItsBandOfTheSphereWithNormalSpeeds) {
     std::vector<double> areaFraction;
     for (const Vec3& x : d.position)
         areaFraction.push_back((x - Vec3(0.1, 0.2, 0.3)).squaredNorm() / 1e-6);
-    EXPECT_LT(ksStatistic(areaFraction, [](double f) { return std::clamp(f, 0.0, 1.0); }),
+    EXPECT_LT(kolmogorovSmirnov(areaFraction, [](double f) { return std::clamp(f, 0.0, 1.0); }),
               ksCritical);
 }
 
@@ -616,9 +607,9 @@ TEST(ConeInjection, SolidConeFromAPointHasTheCapLawAndAFixedSpeed) {
     std::vector<double> polar;
     for (const double c : d.cosPolar) polar.push_back(std::acos(std::clamp(c, -1.0, 1.0)));
     const double cap = 1 - std::cos(cone.outerHalfAngle);
-    EXPECT_LT(
-        ksStatistic(polar, [&](double x) { return std::clamp((1 - std::cos(x)) / cap, 0.0, 1.0); }),
-        ksCritical);
+    EXPECT_LT(kolmogorovSmirnov(
+                  polar, [&](double x) { return std::clamp((1 - std::cos(x)) / cap, 0.0, 1.0); }),
+              ksCritical);
     // Its mean: E[θ] over the cap, (sin θ − θ cos θ)|₀^θout / (1 − cos θout); sample σ_θ/√n.
     const double outer = cone.outerHalfAngle;
     const double expected = (std::sin(outer) - outer * std::cos(outer)) / cap;
@@ -649,11 +640,12 @@ TEST(SizeDistribution, RosinRammlerTruncatedHasItsCumulativeLawAndMean) {
         radiiOf(rosinRammler(scale, n, lo, hi, SizeWeighting::number));
     const double F0 = rosinRammlerCumulative(lo, scale, n),
                  F1 = rosinRammlerCumulative(hi, scale, n);
-    EXPECT_LT(ksStatistic(radii,
-                          [&](double r) {
-                              return std::clamp(
-                                  (rosinRammlerCumulative(r, scale, n) - F0) / (F1 - F0), 0.0, 1.0);
-                          }),
+    EXPECT_LT(kolmogorovSmirnov(radii,
+                                [&](double r) {
+                                    return std::clamp((rosinRammlerCumulative(r, scale, n) - F0) /
+                                                          (F1 - F0),
+                                                      0.0, 1.0);
+                                }),
               ksCritical);
     // Mean of the truncated law by Simpson's rule on 20 000 intervals (independent of the
     // sampler's table), to 4 standard errors.
@@ -692,14 +684,14 @@ TEST(SizeDistribution, MassWeightedRosinRammlerHasTheNumberLawAndTheGivenMassMed
         cumulative[k] =
             cumulative[k - 1] + 0.5 * h * (density(lo + (k - 1) * h) + density(lo + k * h));
     for (double& c : cumulative) c /= cumulative.back();
-    EXPECT_LT(ksStatistic(radii,
-                          [&](double r) {
-                              const double at =
-                                  std::clamp((r - lo) / h, 0.0, double(intervals) - 1e-9);
-                              const auto k = std::size_t(at);
-                              return cumulative[k] +
-                                     (at - double(k)) * (cumulative[k + 1] - cumulative[k]);
-                          }),
+    EXPECT_LT(kolmogorovSmirnov(radii,
+                                [&](double r) {
+                                    const double at =
+                                        std::clamp((r - lo) / h, 0.0, double(intervals) - 1e-9);
+                                    const auto k = std::size_t(at);
+                                    return cumulative[k] +
+                                           (at - double(k)) * (cumulative[k + 1] - cumulative[k]);
+                                }),
               ksCritical);
     // The mass median of the drawn spheres is the mass median asked for (the truncation at
     // 2 µm removes 3e-4 of the mass): within 4 standard errors of the r³-weighted median, whose
@@ -725,11 +717,11 @@ TEST(SizeDistribution, MassWeightedLogNormalIsTheHatchChoateNumberLaw) {
     distribution.weighting = SizeWeighting::mass;
     const std::vector<double> radii = radiiOf(distribution);
     const double sigma = std::log(1.6), numberMedian = 25e-6 * std::exp(-3 * sigma * sigma);
-    EXPECT_LT(ksStatistic(radii,
-                          [&](double r) {
-                              return 0.5 * std::erfc(-std::log(r / numberMedian) /
-                                                     (sigma * std::sqrt(2.0)));
-                          }),
+    EXPECT_LT(kolmogorovSmirnov(radii,
+                                [&](double r) {
+                                    return 0.5 * std::erfc(-std::log(r / numberMedian) /
+                                                           (sigma * std::sqrt(2.0)));
+                                }),
               ksCritical);
     EXPECT_NEAR(distribution.meanRadius(), numberMedian * std::exp(0.5 * sigma * sigma), 1e-18);
 }
@@ -752,7 +744,7 @@ TEST(SizeDistribution, MeasuredTableNumberAndMassWeighted) {
         return F[i - 1] + (x - r[i - 1]) / (r[i] - r[i - 1]) * (F[i] - F[i - 1]);
     };
     const std::vector<double> number = radiiOf(distribution);
-    EXPECT_LT(ksStatistic(number, table), ksCritical);
+    EXPECT_LT(kolmogorovSmirnov(number, table), ksCritical);
     // Mass-weighted: the drawn spheres' mass below each row is the table's F, to 4 standard
     // errors of an r³-weighted fraction (effective sample size (Σw)²/Σw²).
     distribution.weighting = SizeWeighting::mass;

@@ -93,10 +93,11 @@ public:
                                scene.fluid.kinematicViscosity, scene.particles.density} {
         // Each injector sprays through its disc, or the faces of its patch.
         for (const InjectorSettings& injector : injectorsOf(scene))
-            patchAreas_.push_back(
-                injector.model == InjectionModel::patch
-                    ? PatchSampler(carrier.patchTriangles(injector.patch.name)).area()
-                    : 0.0);
+            patchAreas_.push_back(injector.model == InjectionModel::patch
+                                      ? PatchSampler(carrier.patchTriangles(injector.patch.name),
+                                                     carrier.axisymmetry())
+                                            .area()
+                                      : 0.0);
         const FluidSettings& fluid = scene.fluid;
         densityRatio_ = fluid.density / scene.particles.density;
         prandtl_ = prandtlNumber(fluid.density, fluid.kinematicViscosity, fluid.specificHeat,

@@ -8,6 +8,7 @@
 //     carrier { type analyticJet; analyticJetCoeffs { ... } }
 #pragma once
 
+#include "slides/core/box.h"
 #include "slides/core/vector.h"
 
 #include <array>
@@ -50,16 +51,34 @@ struct CarrierSample {
         velocityTimeDerivative.resize(needs.timeDerivative ? count : 0);
         velocityLaplacian.resize(needs.velocityLaplacian ? count : 0);
     }
-};
 
-/// Axis-aligned box [m].
-struct Box {
-    Vec3 min = Vec3::Zero();
-    Vec3 max = Vec3::Zero();
+    /// Entry i becomes entry j of `from`, in every field both samples hold.
+    void copyEntry(std::size_t i, const CarrierSample& from, std::size_t j) {
+        const auto copy = [&](auto& to, const auto& source) {
+            if (!to.empty() && !source.empty()) to[i] = source[j];
+        };
+        copy(velocity, from.velocity);
+        copy(velocityGradient, from.velocityGradient);
+        copy(turbulentKineticEnergy, from.turbulentKineticEnergy);
+        copy(dissipationRate, from.dissipationRate);
+        copy(temperature, from.temperature);
+        copy(velocityTimeDerivative, from.velocityTimeDerivative);
+        copy(velocityLaplacian, from.velocityLaplacian);
+    }
 };
 
 /// A triangle of a boundary patch.
 using PatchTriangle = std::array<Vec3, 3>;
+
+/// The frame of an axisymmetric field given on a wedge (OpenFOAM's axisymmetric meshes): the
+/// field in 3-D is its centre plane's, spanned by axis and radial through origin, turned about
+/// the axis.
+struct AxisymmetricFrame {
+    Vec3 origin = Vec3::Zero();  ///< a point on the axis
+    Vec3 axis = Vec3::UnitX();   ///< unit
+    Vec3 radial = Vec3::UnitY(); ///< unit, in the centre plane, away from the axis into the wedge
+    double wedgeAngle = 0;       ///< the wedge's opening θ [rad]
+};
 
 class CarrierField {
 public:
@@ -112,14 +131,18 @@ public:
     virtual std::vector<std::string> boundaryNames() const { return {}; }
 
     /// The faces of boundary patch `name` as triangles, each with its vertices counter-clockwise
-    /// seen from the gas (surfaces of type patch, surfaces/patch_wall.h); the scene reader has
-    /// checked that the carrier is a 3-D mesh holding that patch.
+    /// seen from the gas (surfaces of type patch, surfaces/patch_wall.h, on a 3-D mesh; patch
+    /// injectors, integrate/patch_sampler.h, also on a wedge or 2-D mesh, where they are the
+    /// wedge's or the slab's faces); the scene reader has checked that the mesh holds the patch.
     virtual std::vector<PatchTriangle> patchTriangles(const std::string& name) const {
         throw std::logic_error("carrier " + describe() + " has no patch " + name);
     }
 
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }
+
+    /// The frame of an axisymmetric field (a wedge mesh).
+    virtual std::optional<AxisymmetricFrame> axisymmetry() const { return std::nullopt; }
 
     /// The normal of the plane of a 2-D field (a mesh one cell thick between `empty` patches).
     virtual std::optional<Vec3> planeNormal() const { return std::nullopt; }

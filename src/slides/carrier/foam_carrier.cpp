@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <random>
 
 namespace slides {
@@ -44,6 +45,8 @@ std::optional<WedgeFrame> findWedge(const FoamMesh& mesh, const std::string& fil
     const Vec3 offsets(n1.dot(mesh.faceCentres[wedges[0]->start]),
                        n2.dot(mesh.faceCentres[wedges[1]->start]), 0.0);
     frame.origin = planes.inverse() * offsets;
+    // The patches' outward normals enclose π − θ.
+    frame.angle = std::numbers::pi - std::acos(std::clamp(n1.dot(n2), -1.0, 1.0));
     const Vec3 centrePlaneNormal = (n1 - n2).normalized();
     frame.radial = frame.axis.cross(centrePlaneNormal).normalized();
     Vec3 centroid = Vec3::Zero();
@@ -393,6 +396,11 @@ std::optional<Box> FoamCarrier::bounds() const {
     return box;
 }
 
+std::optional<AxisymmetricFrame> FoamCarrier::axisymmetry() const {
+    if (!wedge_) return std::nullopt;
+    return AxisymmetricFrame{wedge_->origin, wedge_->axis, wedge_->radial, wedge_->angle};
+}
+
 std::vector<std::string> FoamCarrier::boundaryNames() const {
     std::vector<std::string> names;
     for (const auto& patch : mesh_.patches) names.push_back(patch.name);
@@ -402,8 +410,7 @@ std::vector<std::string> FoamCarrier::boundaryNames() const {
 std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) const {
     const auto patch = std::find_if(mesh_.patches.begin(), mesh_.patches.end(),
                                     [&](const FoamPatch& p) { return p.name == name; });
-    if (patch == mesh_.patches.end() || wedge_ || emptyNormal_)
-        throw std::logic_error("patch surface " + name + " needs a 3-D mesh holding it");
+    if (patch == mesh_.patches.end()) throw std::logic_error("no patch " + name + " in the mesh");
     // Each face fanned about its point average, as the locator's tetrahedra split it, so the
     // triangles lie on the boundary the particles are tracked against. OpenFOAM orders a
     // boundary face's points counter-clockwise seen from outside: reversed, seen from the gas.

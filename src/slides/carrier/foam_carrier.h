@@ -43,6 +43,7 @@ struct WedgeFrame {
     Vec3 origin = Vec3::Zero(); ///< a point on the axis
     Vec3 axis = Vec3::UnitX();
     Vec3 radial = Vec3::UnitY(); ///< in the centre plane, away from the axis into the mesh
+    double angle = 0;            ///< the wedge's opening [rad]
 
     /// The point of the centre plane with x's axial coordinate and radius, and the rotation
     /// about the axis that takes that point back to x.
@@ -79,6 +80,7 @@ public:
     /// Box of the 3-D region the carrier covers (the wedge swept about its axis).
     std::optional<Box> bounds() const override;
     std::optional<Vec3> planeNormal() const override { return emptyNormal_; }
+    std::optional<AxisymmetricFrame> axisymmetry() const override;
     std::vector<std::string> boundaryNames() const override;
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
     /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against

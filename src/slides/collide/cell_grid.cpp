@@ -6,17 +6,19 @@
 
 namespace slides {
 
-void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
+template <typename Keep>
+void CellGrid::buildOf(const std::vector<Vec3>& points, double cellSize, Keep keep) {
     cellSize_ = cellSize;
-    const std::size_t count = points.size();
+    keyed_.clear();
     Vec3 lowest = Vec3::Constant(std::numeric_limits<double>::infinity());
     Vec3 highest = -lowest;
-    for (const Vec3& point : points) {
-        if (!point.allFinite())
-            throw std::domain_error("collision grid: a particle's position is not finite");
-        lowest = lowest.cwiseMin(point);
-        highest = highest.cwiseMax(point);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!keep(points[i])) continue;
+        keyed_.push_back({0, static_cast<std::uint32_t>(i)});
+        lowest = lowest.cwiseMin(points[i]);
+        highest = highest.cwiseMax(points[i]);
     }
+    const std::size_t count = keyed_.size();
     origin_ = count == 0 ? Vec3::Zero() : lowest;
     // The box's cells, with one empty layer on either side across y and z: the rows of a
     // cell's neighbours then never run past the box's edge into the next row.
@@ -34,12 +36,10 @@ void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     yStride_ = static_cast<Key>(cellsPerAxis_[2]);
     xStride_ = yStride_ * static_cast<Key>(cellsPerAxis_[1]);
 
-    keyed_.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Vec3 offset = (points[i] - origin_) / cellSize;
+    for (Keyed& entry : keyed_) {
+        const Vec3 offset = (points[entry.point] - origin_) / cellSize;
         const auto cell = [&](int axis) { return static_cast<Key>(std::floor(offset[axis])); };
-        keyed_[i] = {cell(0) * xStride_ + (cell(1) + 1) * yStride_ + cell(2) + 1,
-                     static_cast<std::uint32_t>(i)};
+        entry.key = cell(0) * xStride_ + (cell(1) + 1) * yStride_ + cell(2) + 1;
     }
     sortByKey(static_cast<Key>(boxCells));
 
@@ -57,6 +57,18 @@ void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
     }
     cellKey_.push_back(std::numeric_limits<Key>::max());
     cellStart_.push_back(static_cast<std::uint32_t>(count));
+}
+
+void CellGrid::build(const std::vector<Vec3>& points, double cellSize) {
+    buildOf(points, cellSize, [](const Vec3& point) {
+        if (!point.allFinite())
+            throw std::domain_error("collision grid: a particle's position is not finite");
+        return true;
+    });
+}
+
+void CellGrid::build(const std::vector<Vec3>& points, double cellSize, const Box& within) {
+    buildOf(points, cellSize, [&](const Vec3& point) { return insideBox(within, point); });
 }
 
 void CellGrid::sortByKey(Key keys) {

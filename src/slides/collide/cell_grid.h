@@ -11,6 +11,7 @@
 // search reads memory in order, without hashing.
 #pragma once
 
+#include "slides/core/box.h"
 #include "slides/core/vector.h"
 
 #include <algorithm>
@@ -30,6 +31,11 @@ public:
     /// Bins the points into cubes of edge cellSize [m] (O(N)). Throws std::domain_error for a
     /// point that is not finite or a box of more cells than a 64-bit number can count.
     void build(const std::vector<Vec3>& points, double cellSize);
+
+    /// build of the points inside `within` only: a point outside it (or not finite) is left
+    /// out, as one that has left the domain and leaves the cloud at the step's end. size()
+    /// counts the points kept; pointAt still gives their indices in points.
+    void build(const std::vector<Vec3>& points, double cellSize, const Box& within);
 
     std::size_t size() const { return sorted_.size(); }
     double cellSize() const { return cellSize_; }
@@ -110,6 +116,10 @@ public:
 
 private:
     using Key = std::uint64_t;
+
+    /// build of the points for which keep(point) holds.
+    template <typename Keep>
+    void buildOf(const std::vector<Vec3>& points, double cellSize, Keep keep);
 
     /// Sorts keyed_ by key, each below keys.
     void sortByKey(Key keys);

@@ -8,8 +8,9 @@
 
 namespace slides {
 
-CoulombForces::CoulombForces(const CoulombSettings& settings, double particleDensity)
-    : settings_(settings), particleDensity_(particleDensity) {}
+CoulombForces::CoulombForces(const CoulombSettings& settings, double particleDensity,
+                             const Box& domain)
+    : settings_(settings), particleDensity_(particleDensity), domain_(domain) {}
 
 bool CoulombForces::isCurrent(const ParticleCloud& cloud) const {
     return cloud.id == evaluatedIds_ && cloud.position == evaluatedPositions_;
@@ -18,8 +19,10 @@ bool CoulombForces::isCurrent(const ParticleCloud& cloud) const {
 void CoulombForces::evaluate(const ParticleCloud& cloud) {
     if (isCurrent(cloud)) return;
     const std::size_t count = cloud.size();
-    // Cells of the cut-off's edge: every pair closer than it is offered once.
-    grid_.build(cloud.position, settings_.cutoff);
+    // Cells of the cut-off's edge: every pair closer than it is offered once. A particle that
+    // has left the domain (however far, or to a state that is not finite) feels and exerts
+    // nothing: it escapes at the step's end, where a state that is not finite stops the run.
+    grid_.build(cloud.position, settings_.cutoff, domain_);
     const double reach = settings_.cutoff * settings_.cutoff;
     pairs_ =
         collectPairs<Pair>(grid_, [&](std::uint32_t s, std::uint32_t t) -> std::optional<Pair> {

@@ -26,7 +26,8 @@ namespace slides {
 
 class CoulombForces {
 public:
-    CoulombForces(const CoulombSettings& settings, double particleDensity);
+    /// Particles outside `domain` take no part: they escape at the step's end.
+    CoulombForces(const CoulombSettings& settings, double particleDensity, const Box& domain);
 
     /// The forces at the cloud's state (cloud.charge sized), unless they are those of the last
     /// evaluation already (same particles at the same positions).
@@ -54,6 +55,7 @@ private:
 
     CoulombSettings settings_;
     double particleDensity_;
+    Box domain_;
     CellGrid grid_;
     std::vector<Pair> pairs_;
     /// pairOf_[pairStart_[i] … pairStart_[i + 1]) are particle i's pairs, as 2 p + side (side 1:

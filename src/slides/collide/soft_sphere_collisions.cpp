@@ -26,8 +26,8 @@ double inertiaPerMass(double radius) { return 0.4 * radius * radius; } // solid 
 
 SoftSphereCollisions::SoftSphereCollisions(const CollisionSettings& collisions,
                                            const ParticleSettings& particles,
-                                           const std::vector<Surface>& surfaces)
-    : settings_(collisions), particles_(particles), surfaces_(surfaces),
+                                           const std::vector<Surface>& surfaces, const Box& domain)
+    : settings_(collisions), particles_(particles), surfaces_(surfaces), domain_(domain),
       newWallContacts_(surfaces.size(), 0) {
     law_ = softContactLawOf(collisions);
     // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
@@ -110,10 +110,12 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
         cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
     skin_ = settings_.softSphere.neighbourSkin * largestRadius;
 
-    grid_.build(cloud.position, 2 * largestRadius + skin_);
+    // A particle that has left the domain (however far, or to a state that is not finite)
+    // touches nothing: it escapes at the step's end.
+    grid_.build(cloud.position, 2 * largestRadius + skin_, domain_);
     // The search reads positions and radii in the grid's cell order, from memory in order.
-    slotRadius_.resize(cloud.size());
-    for (std::size_t slot = 0; slot < cloud.size(); ++slot)
+    slotRadius_.resize(grid_.size());
+    for (std::size_t slot = 0; slot < grid_.size(); ++slot)
         slotRadius_[slot] = cloud.radius[grid_.pointAt(slot)];
     entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t s, std::uint32_t t) {
         const double reach = slotRadius_[s] + slotRadius_[t] + skin_;

@@ -57,9 +57,10 @@ constexpr ParticleId wallId(std::size_t surface) { return ~ParticleId{0} - surfa
 
 class SoftSphereCollisions {
 public:
-    /// Surface s is a soft wall where meetsBySoftContact(collisions, its interaction).
+    /// Surface s is a soft wall where meetsBySoftContact(collisions, its interaction). Particles
+    /// outside `domain` touch no other: they escape at the step's end.
     SoftSphereCollisions(const CollisionSettings& collisions, const ParticleSettings& particles,
-                         const std::vector<Surface>& surfaces);
+                         const std::vector<Surface>& surfaces, const Box& domain);
 
     /// Advances every particle's velocity and spin by its contact load over half its step
     /// (cloud.contactForce, contactTorque: sized by the caller, zero for new particles).
@@ -108,6 +109,7 @@ private:
     CollisionSettings settings_;
     ParticleSettings particles_;
     std::vector<Surface> surfaces_;
+    Box domain_;
     SoftContactLaw law_;
     std::vector<std::size_t> softWalls_; ///< surface indices
     /// E*, G*, yield stress and adhesion of two particles, and of a particle on each surface

@@ -286,7 +286,8 @@ std::vector<KeyDeclaration> declareKeys() {
          R::nonNegative, "Standard deviation of a normally distributed speed; 0: fixed."},
         {"injectors.*.patchCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Model patch (OpenFOAM's patchInjection): points uniform in area over the faces of a "
-         "patch of a 3-D mesh (carrier foamField)."},
+         "patch of the mesh (carrier foamField); on a wedge, over the surface the patch sweeps "
+         "about the axis."},
         {"injectors.*.patchCoeffs.patch", K::word, "-", "-", {}, R::any,
          "The patch, by its name in constant/polyMesh/boundary."},
         {"injectors.*.patchCoeffs.velocity", K::vector, "m/s", "-", {}, R::any,

@@ -365,17 +365,22 @@ void readRateAndCount(const KeyReader& keys, const std::string& base, InjectorSe
 }
 
 /// The mesh patch `base.patch` names, for `what` (a patch surface or injector, asked for by the
-/// key kindKey): one in the foamField carrier's constant/polyMesh/boundary, of a 3-D mesh.
+/// key kindKey): one in the foamField carrier's constant/polyMesh/boundary, not a wedge or empty
+/// patch itself; of a 3-D mesh where `needsThreeDimensions` (a surface: a wedge's or 2-D
+/// mesh's patch would stand for a swept or extruded one).
 FoamPatch readMeshPatch(const KeyReader& keys, const std::string& base, const std::string& kindKey,
-                        const std::string& what, const Scene& scene) {
+                        const std::string& what, const Scene& scene, bool needsThreeDimensions) {
     if (scene.carrier.type != CarrierType::foamField)
         keys.fail(kindKey, what + " needs carrier type foamField (a mesh)");
     keys.require(base + ".patch", "for " + what);
     const std::string name = keys.word(base + ".patch");
     const std::vector<FoamPatch> patches = readFoamBoundary(scene.caseDirectory);
+    const auto flat = [](const FoamPatch& patch) {
+        return patch.type == PatchType::wedge || patch.type == PatchType::empty;
+    };
     std::string names;
     for (const FoamPatch& patch : patches) {
-        if (patch.type == PatchType::wedge || patch.type == PatchType::empty)
+        if (needsThreeDimensions && flat(patch))
             keys.fail(kindKey, what + " needs a 3-D mesh; patch " + patch.name +
                                    " is a wedge or empty patch");
         names += " " + patch.name;
@@ -385,6 +390,9 @@ FoamPatch readMeshPatch(const KeyReader& keys, const std::string& base, const st
     if (found == patches.end())
         keys.fail(base + ".patch",
                   "no patch '" + name + "' in constant/polyMesh/boundary; patches:" + names);
+    if (flat(*found))
+        keys.fail(base + ".patch", "patch '" + name + "' is a wedge or empty patch, a side of " +
+                                       "the axisymmetric or 2-D mesh, not a boundary of its flow");
     return *found;
 }
 
@@ -505,7 +513,7 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
             const std::string coeffs = base + ".patchCoeffs";
             keys.require(coeffs, "for model patch");
             injector.patch.name =
-                readMeshPatch(keys, coeffs, base + ".model", "a patch injector", scene).name;
+                readMeshPatch(keys, coeffs, base + ".model", "a patch injector", scene, false).name;
             if (keys.has(coeffs + ".velocity"))
                 injector.patch.velocity = keys.vector(coeffs + ".velocity");
         } else if (keys.has(base + ".patchCoeffs")) {
@@ -849,7 +857,8 @@ std::string readPatchName(const KeyReader& keys, const std::string& base, const 
     if (keys.has(base + ".point") || keys.has(base + ".normal"))
         keys.fail(base + ".type", "a patch surface takes its shape from the mesh: no point or "
                                   "normal");
-    const FoamPatch patch = readMeshPatch(keys, base, base + ".type", "a patch surface", scene);
+    const FoamPatch patch =
+        readMeshPatch(keys, base, base + ".type", "a patch surface", scene, true);
     if (patch.type == PatchType::symmetry)
         keys.fail(base + ".patch", "patch '" + patch.name + "' is a symmetry plane, not a wall");
     return patch.name;

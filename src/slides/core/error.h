@@ -2,8 +2,10 @@
 //
 // An input error carries where it came from: file, line and key, so a user finds the bad entry
 // at once. Its message shows every byte: control bytes, invalid UTF-8 and invisible characters
-// (a byte-order mark) are escaped as \xNN or \uNNNN. Internal failures (broken invariants) are
-// ordinary std::logic_error / runtime_error.
+// (a byte-order mark) are escaped as \xNN or \uNNNN. A run stopped because a particle's state
+// stopped being finite (forces that overflow, a step far above the stable one) is a
+// NonFiniteState, exit status 1 but not an internal failure. Internal failures (broken
+// invariants) are ordinary std::logic_error / runtime_error.
 #pragma once
 
 #include <stdexcept>
@@ -28,6 +30,13 @@ private:
     int line_;
     std::string key_;
     std::string reason_;
+};
+
+/// A particle's position or velocity is no longer finite: the run stops there instead of carrying
+/// NaN on (the message names the particle, the time and its state).
+class NonFiniteState : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
 };
 
 } // namespace slides

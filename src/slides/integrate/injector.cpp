@@ -74,8 +74,11 @@ Injector::Start Injector::drawStart(ParticleId id, std::uint32_t attempt) const 
     }
     if (settings.model == InjectionModel::patch) {
         const double uniformArea = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
-        const PatchSampler::Point point = patch_->draw(uniformArea, u1, u2);
-        return {point.position, settings.patch.velocity.value_or(Vec3::Zero()), point.normal};
+        const double uniformTurn = patch_->swept() ? random.uniform() : 0.0;
+        const PatchSampler::Point point = patch_->draw(uniformArea, u1, u2, uniformTurn);
+        // On a wedge a given velocity turns with the point: it is the wedge's, swept.
+        return {point.position, point.turn * settings.patch.velocity.value_or(Vec3::Zero()),
+                point.normal};
     }
     const JetNozzle& nozzle = settings.nozzle;
     const Vec3 across = nozzle.crossSpanDirection;
@@ -183,7 +186,7 @@ void Injector::reinject(std::span<const ParticleId> ids, double time, const Carr
 void Injector::add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
                    ParticleCloud& cloud) {
     if (settings_.model == InjectionModel::patch && !patch_)
-        patch_.emplace(carrier.patchTriangles(settings_.patch.name));
+        patch_.emplace(carrier.patchTriangles(settings_.patch.name), carrier.axisymmetry());
     const std::size_t count = ids.size();
     radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)

@@ -1,5 +1,6 @@
 #include "slides/run/stepper.h"
 
+#include "slides/core/error.h"
 #include "slides/core/parallel.h"
 #include "slides/core/particle_order.h"
 #include "slides/integrate/adaptive_runge_kutta_batch.h"
@@ -49,7 +50,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
                                    "the scene is read (config/scene_reader.cpp)");
         chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
         if (scene.physics.electromagnetic.coulomb.on())
-            coulomb_.emplace(scene.physics.electromagnetic.coulomb, scene.particles.density);
+            coulomb_.emplace(scene.physics.electromagnetic.coulomb, scene.particles.density,
+                             scene.domain);
     }
     if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
         if (maxeyRiley_ || exchange)
@@ -60,7 +62,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
     if (scene.collisions.model == CollisionModel::impulse)
         collisions_.emplace(scene.collisions, scene.particles);
     if (scene.collisions.model == CollisionModel::softSphere)
-        softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces);
+        softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces, scene.domain);
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     exchange_ = exchange;
     plane_ = planeConstraintOf(carrier);
@@ -269,6 +271,19 @@ void Stepper::disperse(double) {
     dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
 }
 
+namespace {
+
+/// A predicted point that left the mesh (location ≤ −2) has no gas there: its particle leaves
+/// the mesh within the step and keeps the gas of its start (start entry startOffset + k) for
+/// it, instead of the still gas outside, which would stop it short of the boundary for good.
+void keepStartGasWhereOutside(std::span<const std::int32_t> locations, const CarrierSample& start,
+                              std::size_t startOffset, CarrierSample& predicted) {
+    for (std::size_t k = 0; k < locations.size(); ++k)
+        if (locations[k] <= -2) predicted.copyEntry(k, start, startOffset + k);
+}
+
+} // namespace
+
 void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
@@ -280,6 +295,7 @@ void Stepper::advance(double h) {
             sampleCarrier(points, midpointLocations_, time_ + h, maxeyRiley_->needs(), out);
             dispersion_.addTo(out.velocity, 0);
             if (plane_) plane_->project(out.velocity);
+            keepStartGasWhereOutside(midpointLocations_, gas_, 0, out);
         };
         return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
     }
@@ -289,6 +305,7 @@ void Stepper::advance(double h) {
             sampleCarrier(points, midpointLocations_, time_ + 0.5 * h, CarrierNeeds{}, out);
             dispersion_.addTo(out.velocity, 0);
             if (plane_) plane_->project(out.velocity);
+            keepStartGasWhereOutside(midpointLocations_, gas_, 0, out);
         };
         return chargedMotion_->advance(cloud_, gas_, sampleMidpoint, stepLengths_);
     }
@@ -353,6 +370,9 @@ void Stepper::advanceByMidpointRule(double h) {
                       scratch.midpointGas);
         dispersion_.addTo(scratch.midpointGas.velocity, first);
         if (plane_) plane_->project(scratch.midpointGas.velocity);
+        if (keepsLocations)
+            keepStartGasWhereOutside(scratch.locations, sampled ? gas_ : scratch.gas,
+                                     sampled ? first : 0, scratch.midpointGas);
         relaxBatchExactly(
             {x, v, x, v, scratch.midpointGas.velocity, scratch.velocity, radius, stepLength}, drag_,
             bodyAcceleration_, 1.0);
@@ -465,8 +485,10 @@ void Stepper::meetSurfaces(double h) {
             std::ostringstream message;
             message << "particle " << cloud_.id[i]
                     << " reached a non-finite state at t = " << time_ + h << " s (position "
-                    << x.transpose() << ", velocity " << v.transpose() << ")";
-            throw std::runtime_error(message.str());
+                    << x.transpose() << ", velocity " << v.transpose()
+                    << "): its forces overflowed or the step is unstable; compare time.dt "
+                       "with the step the scene analysis suggests";
+            throw NonFiniteState(message.str());
         }
         Arrival arrival;
         const ImpactResult impact =

@@ -26,9 +26,4 @@ inline std::optional<double> planeContactFraction(const Surface& plane, const Ve
     return startGap / (startGap - endGap);
 }
 
-/// Whether the point lies inside the box (boundary included).
-inline bool insideBox(const Box& box, const Vec3& point) {
-    return (point.array() >= box.min.array()).all() && (point.array() <= box.max.array()).all();
-}
-
 } // namespace slides
