@@ -4,7 +4,9 @@
 // their moments (tolerance 4 standard errors of the sample, so a correct sampler fails one
 // check in about 16 000) and by the Kolmogorov–Smirnov statistic D_n against its 1 % critical
 // value 1.628/√n; several injectors against the nozzle + injection form (bit for bit) and in the
-// output; a chained run; Chung & Ooi's (2011) test 4 from a case dictionary alone.
+// output; chained runs (from a previous run's arrivals, or from its frame at T, which continues
+// it bit for bit); OpenFOAM positions lists; Chung & Ooi's (2011) test 4 from a case dictionary
+// alone.
 #include "../support/case_runs.h"
 #include "../support/dem_impact.h"
 #include "../support/kolmogorov_smirnov.h"
@@ -15,6 +17,7 @@
 #include "slides/integrate/injector_set.h"
 #include "slides/integrate/size_distribution.h"
 #include "slides/io/hdf5_file.h"
+#include "slides/io/hdf5_particles.h"
 #include "slides/physics/soft_contact.h"
 #include "slides/run/stepper.h"
 
@@ -25,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <vector>
@@ -882,6 +886,302 @@ TEST(FileInjection, ChainedRunStartsFromTheArrivalsOfTheFirstBitForBit) {
         ASSERT_EQ(2 * cloud.radius[i], diameters[a]);
         ASSERT_EQ(injectors.injectionTime(i), times[a]);
     }
+}
+
+// ---- chained from a frame; OpenFOAM positions lists ----------------------------------------
+
+// Exact binary times: dt = 2⁻¹⁷ s, the frame at T = 384 dt = 2.93 ms (the spray arrives at the
+// target from 2.4 to 3.6 ms), the end at 2T. Every clock reading
+// of either run is then an exact multiple of dt, so both take steps of exactly dt. (With a
+// decimal dt the clocks round differently: the first run's last step, min(dt, endTime − t),
+// would differ from the second's in its last bits, and so would the positions after it.)
+constexpr double binaryStep = 0x1p-17, frameTime = 384 * binaryStep;
+
+/// The default spray with drag, buoyancy and gravity only (no per-particle state beyond what a
+/// frame holds), in steps of binaryStep until endTime, a frame every frameTime.
+std::string plainSpray(const std::string& injection, long count, double endTime) {
+    char settings[640];
+    std::snprintf(settings, sizeof settings, R"(
+physics { history { model none; } addedMass off; pressureGradient off; lift none; spin off;
+          dispersion { model none; } heatTransfer { model none; } }
+collisions { model none; }
+time { dt %.17g; endTime %.17g; stopWhenAllDone no; }
+output { interval %.17g; hdf5 yes; carrierResolution (8 4 4); }
+)",
+                  binaryStep, endTime, frameTime);
+    return sprayDictionary(injection, count) + settings;
+}
+
+/// Runs the case in scratch to scratch/out; the run's exit status.
+int runTo(const test::ScratchDirectory& scratch, const std::string& dictionary) {
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << dictionary;
+    return test::runCli(scratch.path.string() + " --quiet --output " +
+                            (scratch.path / "out").string(),
+                        scratch.path / "log");
+}
+
+/// A file injector of the given file and fileCoeffs.
+std::string fileInjector(const std::string& name, const std::filesystem::path& file,
+                         const std::string& coeffs) {
+    return "injectors { " + name + " { model file; file \"" + file.string() + "\"; " + coeffs +
+           " } }\n";
+}
+
+TEST(FileInjection, RunFromAFrameContinuesTheFirstRunBitForBit) {
+    test::ScratchDirectory first("inject-frame-a"), second("inject-frame-b");
+    ASSERT_EQ(runTo(first, plainSpray("injection { mode allAtStart; crossSpanSpeed 0.5; }\n", 300,
+                                      2 * frameTime)),
+              0)
+        << test::slurp(first.path / "log");
+    const auto fromA = first.path / "out" / "particles.h5";
+    char time[64];
+    std::snprintf(time, sizeof time, "fileCoeffs { source frame; time %.17g; }", frameTime);
+    ASSERT_EQ(runTo(second, plainSpray(fileInjector("fromA", fromA, time), 0, frameTime)), 0)
+        << test::slurp(second.path / "log");
+
+    const Hdf5File a(fromA, Hdf5Access::readOnly);
+    const Hdf5File b(second.path / "out" / "particles.h5", Hdf5Access::readOnly);
+    ASSERT_EQ(a.readDouble("/frames/000001", "time"), frameTime);
+    // B's particle k is the k-th in flight in A's frame at T (its arrived ones left out).
+    const auto idsAtT = a.readUInt64("/frames/000001/id");
+    const auto statesAtT = a.readInt32("/frames/000001/state");
+    std::vector<std::uint64_t> inFlight;
+    for (std::size_t i = 0; i < idsAtT.size(); ++i)
+        if (statesAtT[i] == 0) inFlight.push_back(idsAtT[i]);
+    ASSERT_GT(inFlight.size(), 30u);
+    ASSERT_LT(inFlight.size(), idsAtT.size() - 30) << "some arrived before T";
+    // Both runs' ends: every particle of B where, as fast as, and in the state its original
+    // is in A's, bit for bit.
+    const auto idsA = a.readUInt64("/frames/000002/id"), idsB = b.readUInt64("/frames/000001/id");
+    const auto xA = a.readDoubles("/frames/000002/position", 3),
+               xB = b.readDoubles("/frames/000001/position", 3);
+    const auto uA = a.readDoubles("/frames/000002/velocity", 3),
+               uB = b.readDoubles("/frames/000001/velocity", 3);
+    const auto sA = a.readInt32("/frames/000002/state"), sB = b.readInt32("/frames/000001/state");
+    std::map<std::uint64_t, std::size_t> rowOfA;
+    for (std::size_t i = 0; i < idsA.size(); ++i) rowOfA[idsA[i]] = i;
+    const long continued = std::count_if(idsA.begin(), idsA.end(), [&](std::uint64_t id) {
+        return std::find(inFlight.begin(), inFlight.end(), id) != inFlight.end();
+    });
+    ASSERT_EQ(long(idsB.size()), continued);
+    long arrivedAfterT = 0;
+    for (std::size_t j = 0; j < idsB.size(); ++j) {
+        const std::size_t i = rowOfA.at(inFlight.at(idsB[j]));
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_EQ(xB[3 * j + c], xA[3 * i + c]) << "particle " << idsB[j];
+            ASSERT_EQ(uB[3 * j + c], uA[3 * i + c]) << "particle " << idsB[j];
+        }
+        ASSERT_EQ(sB[j], sA[i]);
+        arrivedAfterT += sB[j];
+    }
+    EXPECT_GT(arrivedAfterT, 0) << "some arrive between T and the end";
+    // Their arrivals: the same place and velocity; the time T later, to the rounding of the
+    // two sums (the same step start plus the same fraction of a step, added in another order:
+    // a few units in the last place of 5.9 ms, 8.7e-19 s).
+    const auto arrivalIdsA = a.readUInt64("/arrivals/id"),
+               arrivalIdsB = b.readUInt64("/arrivals/id");
+    const auto tA = a.readDoubles("/arrivals/time", 1), tB = b.readDoubles("/arrivals/time", 1);
+    const auto pA = a.readDoubles("/arrivals/position", 3),
+               pB = b.readDoubles("/arrivals/position", 3);
+    ASSERT_EQ(long(arrivalIdsB.size()), arrivedAfterT);
+    for (std::size_t j = 0; j < arrivalIdsB.size(); ++j) {
+        const auto at =
+            std::find(arrivalIdsA.begin(), arrivalIdsA.end(), inFlight.at(arrivalIdsB[j]));
+        ASSERT_NE(at, arrivalIdsA.end());
+        const std::size_t i = std::size_t(at - arrivalIdsA.begin());
+        EXPECT_NEAR(tB[j] + frameTime, tA[i], 8 * 8.7e-19);
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(pB[3 * j + c], pA[3 * i + c]);
+    }
+}
+
+/// A particles.h5 by the run's own writer (io/hdf5_particles.h): three particles, the last
+/// arrived, with spins and temperatures, in frames at t = 0, 1e-3 (plus one unit in the last
+/// place, as a run's clock may give) and 2e-3, and a frame at 3e-3 without diameters.
+std::filesystem::path writeFrames(const std::filesystem::path& directory) {
+    const std::vector<std::uint64_t> ids{7, 8, 9};
+    const std::vector<Vec3> positions{{0.01, 0.001, 0}, {0.02, -0.002, 0.001}, {0.06, 0, 0}};
+    const std::vector<Vec3> velocities{{20, 0.5, 0}, {18, -1, 0.25}, {0, 0, 0}};
+    const std::vector<double> radii{40e-6, 1.0 / 30000, 80e-6};
+    const std::vector<std::int32_t> states{0, 0, 1};
+    const std::vector<Vec3> spins{{100, 0, -50}, {0, 30.5, 0}, {0, 0, 0}};
+    const std::vector<double> temperatures{350, 400.25, 300};
+    ParticlesHdf5 h5(directory, "frames");
+    ParticleFrame frame{ids, positions, velocities, radii, states};
+    frame.temperature = temperatures;
+    frame.angularVelocity = spins;
+    for (const double time : {0.0, std::nextafter(1e-3, 1.0), 2e-3}) h5.writeFrame(time, frame);
+    frame.fields = ParticleFieldSet::all().without(ParticleField::diameter);
+    h5.writeFrame(3e-3, frame);
+    h5.finish({});
+    return directory / ParticlesHdf5::fileName;
+}
+
+TEST(FileInjection, FrameGivesItsParticlesInFlightWithTheStatesTheRunKeeps) {
+    test::ScratchDirectory scratch("inject-frame-states");
+    const auto frames = writeFrames(scratch.path);
+    const std::string fromFrame =
+        fileInjector("fromA", frames, "startTime 5e-4; fileCoeffs { source frame; time 1e-3; }");
+    const Scene scene = sceneOf(scratch, sprayDictionary(fromFrame + "physics { spin on; "
+                                                                     "heatTransfer { model "
+                                                                     "ranzMarshall; } }\n"
+                                                                     "particles { specificHeat "
+                                                                     "450; }\n",
+                                                         0));
+    ASSERT_EQ(scene.particles.count, 2); // the arrived one left out
+    const InjectorSet injectors(scene.injectors);
+    EXPECT_EQ(injectors.injectionTime(0), 5e-4); // all at startTime
+    EXPECT_EQ(injectors.injectionTime(1), 5e-4);
+    ParticleCloud cloud = injectAll(scene);
+    ASSERT_EQ(cloud.size(), 2u);
+    // The arrays of the states this run keeps (the stepper sizes them so), then the frame's.
+    cloud.angularVelocity.resize(2, Vec3::Zero());
+    cloud.temperature.resize(2, 0.0);
+    injectors.setStartStates(cloud, 0);
+    EXPECT_TRUE(cloud.position[1] == Vec3(0.02, -0.002, 0.001));
+    EXPECT_TRUE(cloud.velocity[1] == Vec3(18, -1, 0.25));
+    EXPECT_EQ(cloud.radius[1], 1.0 / 30000); // 0.5 (2 r): exact
+    EXPECT_TRUE(cloud.angularVelocity[1] == Vec3(0, 30.5, 0));
+    EXPECT_EQ(cloud.temperature[1], 400.25);
+    // A run that keeps neither takes the rest (the CSV's spin and T columns are refused there).
+    const Scene plain = sceneOf(scratch, sprayDictionary(fromFrame, 0));
+    EXPECT_EQ(plain.particles.count, 2);
+}
+
+const std::string foamHeader =
+    R"(/*--------------------------------*- C++ -*----------------------------------*\
+  =========                 |
+  \\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
+\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       vectorField;
+    object      kinematicCloudPositions;
+}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+)";
+
+TEST(FileInjection, OpenFoamPositionsListStartsItsParticlesAtU0WithDrawnSizes) {
+    test::ScratchDirectory scratch("inject-foam-positions");
+    // The length, then positions with none, one and three labels after them (manualInjection's
+    // file; a cloud's positions file of v1912, `(x y z) celli`; older ones' tetFace and tetPt).
+    std::ofstream(scratch.path / "constant" / "kinematicCloudPositions")
+        << foamHeader
+        << "3\n(\n(0.001 0 0)\n(0.002 0.0005 0) 117\n(3e-3 -5e-4 1e-3) 117 402 1\n)\n"
+           "// ************************************************************************* //\n";
+    const std::string sizes = "radiusDistribution { type logNormal; median 20e-6; "
+                              "geometricStandardDeviation 1.5; minimum 5e-6; maximum 80e-6; }";
+    const Scene scene =
+        sceneOf(scratch, sprayDictionary(fileInjector("bed", "constant/kinematicCloudPositions",
+                                                      "fileCoeffs { velocity (20 1 0); } " + sizes),
+                                         0));
+    ASSERT_EQ(scene.particles.count, 3);
+    const ParticleCloud cloud = injectAll(scene);
+    ASSERT_EQ(cloud.size(), 3u);
+    EXPECT_TRUE(cloud.position[1] == Vec3(0.002, 0.0005, 0));
+    EXPECT_TRUE(cloud.position[2] == Vec3(3e-3, -5e-4, 1e-3));
+    const RadiusSampler drawn(scene.injectors[0].radius);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_TRUE(cloud.velocity[k] == Vec3(20, 1, 0)); // U0, not the gas's
+        EXPECT_EQ(cloud.radius[k], drawn.draw(1, k));     // as a disc's: keyed by (seed, id)
+    }
+    // Without the length; sizes from particles.radiusDistribution (fixed 80 µm).
+    std::ofstream(scratch.path / "constant" / "kinematicCloudPositions")
+        << foamHeader << "(\n(0.001 0 0) (0.002 0 0)\n)\n";
+    const ParticleCloud fixed = injectAll(
+        sceneOf(scratch, sprayDictionary(fileInjector("bed", "constant/kinematicCloudPositions",
+                                                      "fileCoeffs { velocity (20 1 0); }"),
+                                         0)));
+    ASSERT_EQ(fixed.size(), 2u);
+    EXPECT_EQ(fixed.radius[1], 80e-6);
+}
+
+/// Runs the case of dictionary in scratch, which must be refused with exit status 2, one
+/// message and no output; returns the message.
+std::string refusedRun(const test::ScratchDirectory& scratch, const std::string& dictionary) {
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << dictionary;
+    const auto log = scratch.path / "log";
+    EXPECT_EQ(test::runCli(scratch.path.string() + " --quiet", log), 2);
+    const std::string message = test::slurp(log);
+    EXPECT_EQ(message.find("error:"), message.rfind("error:")) << "one message: " << message;
+    EXPECT_FALSE(std::filesystem::exists(scratch.path / "slides")) << "output written";
+    return message;
+}
+
+/// The line of the first occurrence of text in dictionary.
+int lineOf(const std::string& dictionary, const std::string& text) {
+    return 1 + int(std::count(dictionary.begin(), dictionary.begin() + long(dictionary.find(text)),
+                              '\n'));
+}
+
+TEST(FileInjection, BadFramesAndPositionsListsAreRefusedAtFileLineAndKey) {
+    test::ScratchDirectory scratch("inject-file-refusals");
+    const auto frames = writeFrames(scratch.path);
+    const auto expectRefused = [&](const std::string& injector, const std::string& where,
+                                   const std::string& expected) {
+        const std::string dictionary = sprayDictionary(injector, 0);
+        const std::string message = refusedRun(scratch, dictionary);
+        const std::string located =
+            where.empty()
+                ? expected
+                : "slidesProperties:" + std::to_string(lineOf(dictionary, where)) + ": " + expected;
+        EXPECT_NE(message.find(located), std::string::npos) << "expected '" << located << "' in:\n"
+                                                            << message;
+    };
+    // A time that matches no frame: the frames' times listed.
+    expectRefused(fileInjector("fromA", frames, "fileCoeffs {\nsource frame;\ntime 1.5e-3; }"),
+                  "time 1.5e-3",
+                  "key 'injectors.fromA.fileCoeffs.time': no frame of " + frames.string() +
+                      " at t = 0.0015 s; its 4 frames are at 0 0.001 0.002 0.003 s");
+    expectRefused(fileInjector("fromA", frames, "fileCoeffs {\nsource frame;\ntime 3e-3; }"), "",
+                  frames.string() +
+                      ": key '/frames/000003/diameter': missing: the run wrote its frames "
+                      "without diameter (output.fields)");
+    expectRefused(fileInjector("fromA", frames, "fileCoeffs {\nsource frame; }"), "fileCoeffs {",
+                  "key 'injectors.fromA.fileCoeffs.time': missing key (s), needed for source "
+                  "frame");
+    // Keys where they do not apply.
+    std::ofstream(scratch.path / "constant" / "rows.csv")
+        << "x y z u v w d\n0.001 0 0 1 0 0 1e-4\n";
+    expectRefused(fileInjector("rows", "constant/rows.csv", "fileCoeffs {\nsource frame; }"),
+                  "source frame",
+                  "key 'injectors.rows.fileCoeffs.source': only a previous run's particles.h5 "
+                  "has arrivals and frames");
+    expectRefused(fileInjector("fromA", frames, "fileCoeffs {\ntime 1e-3; }"), "time 1e-3",
+                  "key 'injectors.fromA.fileCoeffs.time': only source frame (of a particles.h5) "
+                  "takes a frame's time");
+    expectRefused(fileInjector("fromA", frames, "fileCoeffs {\nvelocity (1 0 0); }"),
+                  "velocity (1 0 0)",
+                  "key 'injectors.fromA.fileCoeffs.velocity': only an OpenFOAM positions list "
+                  "takes a velocity");
+    // Positions lists: a malformed entry, a length that differs from the entries, no velocity,
+    // a position outside the domain box (checked as a CSV's rows are).
+    const auto list = scratch.path / "constant" / "kinematicCloudPositions";
+    const std::string bed = fileInjector("bed", "constant/kinematicCloudPositions",
+                                         "fileCoeffs {\nvelocity (20 0 0); }");
+    const int header = int(std::count(foamHeader.begin(), foamHeader.end(), '\n'));
+    const int firstEntry = header + 3; // after the header, the length and "("
+    std::ofstream(list) << foamHeader << "2\n(\n(0.001 0 0)\n(0.002 0 O)\n)\n";
+    expectRefused(bed, "",
+                  list.string() + ":" + std::to_string(firstEntry + 1) +
+                      ": key 'injectors.bed.file': entry 2: expected a number, found 'O'");
+    std::ofstream(list) << foamHeader << "2\n(\n(0.001 0 0)\n(0.002 0 0 1e-3)\n)\n";
+    expectRefused(bed, "",
+                  list.string() + ":" + std::to_string(firstEntry + 1) +
+                      ": key 'injectors.bed.file': entry 2: a position has 3 coordinates, this "
+                      "has 4");
+    std::ofstream(list) << foamHeader << "3\n(\n(0.001 0 0)\n(0.002 0 0)\n)\n";
+    expectRefused(bed, "",
+                  list.string() + ":" + std::to_string(header + 1) +
+                      ": key 'injectors.bed.file': the list announces 3 positions and holds 2");
+    std::ofstream(list) << foamHeader << "(\n(0.001 0 0)\n(0.2 0 0)\n)\n";
+    expectRefused(fileInjector("bed", "constant/kinematicCloudPositions", "fileCoeffs {\n}"),
+                  "fileCoeffs {", "key 'injectors.bed.fileCoeffs.velocity': missing key (m/s)");
+    expectRefused(bed, "file \"constant",
+                  "key 'injectors.bed.file': the 2 particles of the file is not inside the "
+                  "domain box: 50 % of it (1 of 2 points");
 }
 
 // ---- Chung & Ooi (2011) test 4 from a dictionary ---------------------------------------------

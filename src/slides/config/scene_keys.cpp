@@ -293,10 +293,23 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injectors.*.patchCoeffs.velocity", K::vector, "m/s", "-", {}, R::any,
          "Start velocity; not given: the gas velocity's part normal to the patch, (U·n) n."},
         {"injectors.*.file", K::word, "-", "-", {}, R::any,
-         "Model file: a CSV whose header names its columns (x y z u v w, d or r; optional t, "
-         "wx wy wz, T), "
-         "a particle a row in order of t (integrate/particle_file.h); or a previous run's "
-         "particles.h5 (its arrivals). Relative to the case directory."},
+         "Model file, its format told by its content (integrate/particle_file.h): a previous "
+         "run's particles.h5 (its arrivals, or a frame: fileCoeffs.source); an OpenFOAM "
+         "positions list (FoamFile header, as manualInjection's kinematicCloudPositions); else a "
+         "CSV whose header names its columns (x y z u v w, d or r; optional t, wx wy wz, T), a "
+         "particle a row in order of t. Relative to the case directory."},
+        {"injectors.*.fileCoeffs", K::dictionary, "-", "-", {}, R::any,
+         "Model file: which particles of a particles.h5, the velocity of a positions list."},
+        {"injectors.*.fileCoeffs.source", K::word, "-", "arrivals",
+         namesOf(previousRunSourceNames()), R::any,
+         "A particles.h5's arrivals (each at its arrival time), or the particles in flight in "
+         "its frame at fileCoeffs.time, with their velocity, size, spin and temperature, all "
+         "at startTime (integrate/previous_run.h)."},
+        {"injectors.*.fileCoeffs.time", K::scalar, "s", "-", {}, R::nonNegative,
+         "Source frame: the frame's time in the previous run, to 1e-6 of it."},
+        {"injectors.*.fileCoeffs.velocity", K::vector, "m/s", "-", {}, R::any,
+         "An OpenFOAM positions list: every particle's start velocity (OpenFOAM's U0); sizes "
+         "from the injector's radiusDistribution."},
         {"injectors.*.ensembleCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Model ensemble: count particles packed at rest in a box or a cylinder (Section 4.3; "
          "integrate/ensemble.h)."},
@@ -321,8 +334,8 @@ std::vector<KeyDeclaration> declareKeys() {
          "lubachevskyStillinger: γ of dR_i/dt = γ R_i (Eq. 4.32), per unit time R̄/v̄; slower "
          "growth packs a little denser before jamming."},
         {"injectors.*.radiusDistribution", K::dictionary, "-", "-", {}, R::any,
-         "Its own radius distribution (disc, cone), with the keys of "
-         "particles.radiusDistribution; default that one."},
+         "Its own radius distribution (disc, cone, patch, ensemble, a file's positions list), "
+         "with the keys of particles.radiusDistribution; default that one."},
 
         {"physics", K::dictionary, "-", "-", {}, R::any, "Forces on the particles."},
         {"physics.drag", K::word, "-", "haiderLevenspiel", namesOf(dragModelNames()), R::any,

@@ -8,6 +8,7 @@
 #include "slides/core/name_table.h"
 #include "slides/integrate/ensemble.h"
 #include "slides/integrate/particle_file.h"
+#include "slides/integrate/previous_run.h"
 #include "slides/integrate/size_distribution.h"
 
 #include <algorithm>
@@ -457,6 +458,68 @@ void packInjector(const KeyReader& keys, const std::string& base, InjectorSettin
     }
 }
 
+/// The fileCoeffs of an injector of model file, each key refused where the file's format
+/// (integrate/particle_file.h) gives it no meaning.
+void readFileCoeffs(const KeyReader& keys, const std::string& base,
+                    const std::filesystem::path& file, InjectorSettings& injector) {
+    const std::string coeffs = base + ".fileCoeffs";
+    ParticleFileSettings& settings = injector.file;
+    const auto refuseUnless = [&](bool applies, const std::string& key, const std::string& why) {
+        if (!applies && keys.has(coeffs + "." + key)) keys.fail(coeffs + "." + key, why);
+    };
+    const bool previousRun = settings.format == ParticleFileFormat::particlesH5;
+    const bool positions = settings.format == ParticleFileFormat::foamPositions;
+    refuseUnless(previousRun, "source",
+                 "only a previous run's particles.h5 has arrivals and frames");
+    refuseUnless(positions, "velocity",
+                 "only an OpenFOAM positions list takes a velocity: this file gives its own");
+    if (previousRun)
+        settings.source = *valueNamed(previousRunSourceNames(), keys.word(coeffs + ".source"));
+    const bool frame = previousRun && settings.source == PreviousRunSource::frame;
+    refuseUnless(frame, "time", "only source frame (of a particles.h5) takes a frame's time");
+    if (frame) {
+        keys.require(coeffs + ".time", "for source frame");
+        const double time = keys.scalar(coeffs + ".time");
+        const std::vector<double> times = previousRunFrameTimes(file);
+        const auto index = frameAtTime(times, time);
+        if (!index) {
+            std::ostringstream message;
+            message << "no frame of " << file.string() << " at t = " << time << " s; its "
+                    << times.size() << " frames are at " << listFrameTimes(times);
+            keys.fail(coeffs + ".time", message.str());
+        }
+        settings.frame = *index;
+    }
+    if (positions) {
+        keys.require(coeffs + ".velocity", "for an OpenFOAM positions list (OpenFOAM's U0)");
+        settings.velocity = keys.vector(coeffs + ".velocity");
+    }
+}
+
+/// An injector of model file: its file's rows, and for a positions list their sizes from its
+/// radiusDistribution (integrate/particle_file.h).
+void readFileInjector(const KeyReader& keys, const std::string& base, const Scene& scene,
+                      InjectorSettings& injector) {
+    keys.require(base + ".file", "for model file");
+    for (const char* given : {"count", "rate", "duration"})
+        if (keys.has(base + "." + given))
+            keys.fail(base + "." + given, "a file injector's particles are its rows");
+    const std::filesystem::path given = keys.word(base + ".file");
+    const std::filesystem::path file = given.is_absolute() ? given : scene.caseDirectory / given;
+    injector.file.format = particleFileFormat(file);
+    const std::string sizes = base + ".radiusDistribution";
+    if (injector.file.format == ParticleFileFormat::foamPositions)
+        injector.radius = keys.has(sizes)
+                              ? readRadiusDistribution(keys, sizes + ".", scene.caseDirectory)
+                              : scene.particles.radius;
+    else if (keys.has(sizes))
+        keys.fail(sizes, "this file gives the particles' sizes (only an OpenFOAM positions list "
+                         "takes a radiusDistribution)");
+    readFileCoeffs(keys, base, file, injector);
+    readParticleFile(file, injector);
+    injector.count = static_cast<long>(injector.rows.size());
+}
+
 /// The injectors of `injectors {}`, their ids in blocks in the order written.
 std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Dictionary& top,
                                             const Scene& scene) {
@@ -481,13 +544,7 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
         injector.injection.seed = scene.injection.seed;
         injector.nozzle = readDisc(keys, base);
         if (injector.model == InjectionModel::file) {
-            keys.require(base + ".file", "for model file");
-            for (const char* given : {"count", "rate", "duration", "radiusDistribution"})
-                if (keys.has(base + "." + given))
-                    keys.fail(base + "." + given, "a file injector's particles are its rows");
-            const std::filesystem::path file = keys.word(base + ".file");
-            readParticleFile(file.is_absolute() ? file : scene.caseDirectory / file, injector);
-            injector.count = static_cast<long>(injector.rows.size());
+            readFileInjector(keys, base, scene, injector);
         } else if (injector.model == InjectionModel::ensemble) {
             injector.injection.mode = InjectionMode::allAtStart;
             injector.count = keys.integer(base + ".count");
@@ -536,6 +593,8 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
         if (injector.injection.reinjectEscaped && injector.givesRows())
             keys.fail(base + ".reinjectEscaped",
                       "a file's or an ensemble's particles are its rows: none to draw anew");
+        if (injector.model != InjectionModel::file && keys.has(base + ".fileCoeffs"))
+            keys.fail(base + ".fileCoeffs", "only model file takes fileCoeffs");
         if (injector.model != InjectionModel::ensemble && keys.has(base + ".ensembleCoeffs"))
             keys.fail(base + ".ensembleCoeffs", "only model ensemble takes ensembleCoeffs");
         firstId += static_cast<std::uint64_t>(injector.count);
@@ -547,6 +606,8 @@ std::vector<InjectorSettings> readInjectors(const KeyReader& keys, const Diction
 /// A file's spins and temperatures need the particles to keep them: never dropped silently.
 void requireFileStatesKept(const KeyReader& keys, const Scene& scene) {
     for (const InjectorSettings& injector : scene.injectors) {
+        // A frame's spins and temperatures are taken where the run keeps them (previous_run.h).
+        if (injector.file.source == PreviousRunSource::frame) continue;
         const std::string key = "injectors." + injector.name + ".file";
         if (injector.rowsGiveSpin && !tracksSpin(scene))
             keys.fail(key, "gives spins (wx wy wz), but the particles keep none: set physics.spin "

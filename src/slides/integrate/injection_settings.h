@@ -13,7 +13,11 @@
 //         gunA { model disc; centre (0 0 0); axis (1 0 0); radius 2e-3; count 4000; rate 8e4; }
 //         gunB { model cone; centre (0 0.02 0); axis (1 -0.2 0); count 2000; rate 4e4;
 //                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
-//         rows { model file; file "constant/particles.csv"; }
+//         rows { model file; file "constant/particles.csv"; }     // integrate/particle_file.h
+//         fromA { model file; file "../runA/slides/particles.h5";
+//                 fileCoeffs { source frame; time 2e-3; } }
+//         bed { model file; file "constant/kinematicCloudPositions";
+//               fileCoeffs { velocity (0 -1 0); } }
 //         inlet { model patch; patchCoeffs { patch inlet; } count 1000; rate 1e5; }
 //         bed { model ensemble; count 500; ensembleCoeffs { ... } }  // integrate/ensemble.h
 //     }
@@ -157,6 +161,30 @@ struct PatchInjectionSettings {
         velocity; ///< given [m/s]; none: the gas velocity's part normal to the patch
 };
 
+/// How the file of an injector of model file is read, told by its content
+/// (integrate/particle_file.h).
+enum class ParticleFileFormat { csv, particlesH5, foamPositions };
+
+/// Which particles of a previous run's particles.h5 become the rows (integrate/previous_run.h).
+enum class PreviousRunSource { arrivals, frame };
+
+struct PreviousRunSourceName {
+    PreviousRunSource value;
+    std::string_view name;
+};
+
+constexpr std::array<PreviousRunSourceName, 2> previousRunSourceNames() {
+    return {{{PreviousRunSource::arrivals, "arrivals"}, {PreviousRunSource::frame, "frame"}}};
+}
+
+/// Model file: the file's format and what `fileCoeffs {}` says about reading it.
+struct ParticleFileSettings {
+    ParticleFileFormat format = ParticleFileFormat::csv;
+    PreviousRunSource source = PreviousRunSource::arrivals; ///< particlesH5
+    std::size_t frame = 0;        ///< particlesH5, source frame: its index in /frames
+    Vec3 velocity = Vec3::Zero(); ///< foamPositions: every particle's start velocity [m/s]
+};
+
 /// One particle given by a row of a file (integrate/particle_file.h).
 struct ParticleRow {
     Vec3 position = Vec3::Zero();        ///< [m]
@@ -181,6 +209,7 @@ struct InjectorSettings {
     double startTime = 0; ///< [s], the first particle's injection time
     ConeSettings cone;
     PatchInjectionSettings patch;
+    ParticleFileSettings file;        ///< model file: how its file is read
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T

@@ -1,11 +1,15 @@
 #include "slides/integrate/particle_file.h"
 
+#include "slides/config/dictionary_lexer.h"
 #include "slides/core/error.h"
 #include "slides/integrate/csv_table.h"
-#include "slides/io/hdf5_file.h"
+#include "slides/integrate/foam_positions.h"
+#include "slides/integrate/previous_run.h"
+#include "slides/integrate/size_distribution.h"
 
-#include <algorithm>
+#include <fstream>
 #include <string>
+#include <string_view>
 
 namespace slides {
 
@@ -51,44 +55,45 @@ std::vector<ParticleRow> readCsv(const std::filesystem::path& path, InjectorSett
     return rows;
 }
 
-/// The arrivals of a previous run's particles.h5, in order of arrival.
-std::vector<ParticleRow> readArrivals(const std::filesystem::path& path) {
-    const auto refuse = [&](const std::string& message) {
-        throw InputError(path.string(), 0, "/arrivals", message);
-    };
-    std::vector<double> positions, velocities, diameters, times;
-    try {
-        const Hdf5File file(path, Hdf5Access::readOnly);
-        if (!file.exists("/arrivals")) refuse("no arrivals: the run did not finish");
-        positions = file.readDoubles("/arrivals/position", 3);
-        velocities = file.readDoubles("/arrivals/velocity", 3);
-        diameters = file.readDoubles("/arrivals/diameter", 1);
-        times = file.readDoubles("/arrivals/time", 1);
-    } catch (const InputError&) {
-        throw;
-    } catch (const std::exception& error) {
-        refuse(std::string("not a readable particles.h5: ") + error.what());
-    }
-    const std::size_t count = diameters.size();
-    if (positions.size() != 3 * count || velocities.size() != 3 * count || times.size() != count)
-        refuse("datasets of different lengths");
-    if (count == 0) refuse("no particle arrived");
-    std::vector<ParticleRow> rows(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        rows[i].position = Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
-        rows[i].velocity = Vec3(velocities[3 * i], velocities[3 * i + 1], velocities[3 * i + 2]);
-        rows[i].radius = 0.5 * diameters[i];
-        rows[i].time = times[i];
-    }
-    std::stable_sort(rows.begin(), rows.end(),
-                     [](const ParticleRow& a, const ParticleRow& b) { return a.time < b.time; });
-    return rows;
-}
-
 } // namespace
 
+ParticleFileFormat particleFileFormat(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(file.string(), 0, "", "cannot read the file");
+    constexpr std::string_view hdf5Signature("\x89HDF\r\n\x1a\n", 8);
+    std::string start(4096, '\0');
+    in.read(start.data(), static_cast<std::streamsize>(start.size()));
+    start.resize(static_cast<std::size_t>(in.gcount()));
+    if (start.starts_with(hdf5Signature)) return ParticleFileFormat::particlesH5;
+    // The first token after the banner comment: FoamFile opens an OpenFOAM file.
+    try {
+        dictionary_syntax::Lexer lexer(start, file.string());
+        const dictionary_syntax::Token& first = lexer.peek();
+        if (first.kind == dictionary_syntax::Token::Kind::word && first.text == "FoamFile")
+            return ParticleFileFormat::foamPositions;
+    } catch (const dictionary_syntax::LexFailure&) { // not OpenFOAM text: a CSV table
+    }
+    return ParticleFileFormat::csv;
+}
+
 void readParticleFile(const std::filesystem::path& file, InjectorSettings& injector) {
-    injector.rows = file.extension() == ".h5" ? readArrivals(file) : readCsv(file, injector);
+    switch (injector.file.format) {
+    case ParticleFileFormat::csv: injector.rows = readCsv(file, injector); return;
+    case ParticleFileFormat::particlesH5: readPreviousRun(file, injector); return;
+    case ParticleFileFormat::foamPositions: {
+        const std::vector<Vec3> positions =
+            readFoamPositions(file, "injectors." + injector.name + ".file");
+        const RadiusSampler radius(injector.radius);
+        injector.rows.assign(positions.size(), ParticleRow{});
+        for (std::size_t k = 0; k < positions.size(); ++k) {
+            injector.rows[k].position = positions[k];
+            injector.rows[k].velocity = injector.file.velocity;
+            injector.rows[k].radius = radius.draw(injector.injection.seed, injector.firstId + k);
+        }
+        injector.rowsGiveSpin = injector.rowsGiveTemperature = false;
+        return;
+    }
+    }
 }
 
 } // namespace slides

@@ -1,16 +1,22 @@
 // Particle file: the particles of an injector of model file, one per row, in order of
-// injection time.
+// injection time. The file's format is told by its content:
+//   particlesH5    an HDF5 file (its signature): a previous run's particles.h5, whose arrivals or
+//                  a frame's particles in flight become the rows (integrate/previous_run.h);
+//   foamPositions  an OpenFOAM file (its FoamFile header): a list of positions as OpenFOAM's
+//                  manualInjection reads (integrate/foam_positions.h), all at the injector's
+//                  startTime with fileCoeffs.velocity (OpenFOAM's U0) and radii drawn from the
+//                  injector's radiusDistribution (OpenFOAM's sizeDistribution), keyed by
+//                  (seed, id) as a disc's;
+//   csv            anything else: comma- or space-separated, `#` starts a comment line, a
+//                  header naming its columns: x y z [m], u v w [m/s], d (diameter) or r (radius)
+//                  [m], and optionally t, the injection time after the injector's startTime [s]
+//                  (default 0; the rows must not go back in time), wx wy wz the spin [rad/s]
+//                  and T the temperature [K].
 //
 //     injectors { ball { model file; file "constant/ball.csv"; } }
 //     injectors { target { model file; file "../nozzleRun/slides/particles.h5"; } }
-//
-// A CSV file (comma- or space-separated; `#` starts a comment line) opens with a header naming
-// its columns: x y z [m], u v w [m/s], d (diameter) or r (radius) [m], and optionally t, the
-// injection time after the injector's startTime [s] (default 0; the rows must not go back in
-// time), wx wy wz the spin [rad/s] and T the temperature [K]. A `.h5` file is a previous run's
-// particles.h5: its /arrivals (position, velocity, diameter, time) become the rows, in order of
-// arrival, so a nozzle run can be continued by a target run (positions and velocities carried bit
-// for bit).
+//     injectors { bed { model file; file "constant/kinematicCloudPositions";
+//                       fileCoeffs { velocity (0 -1 0); } } }
 #pragma once
 
 #include "slides/integrate/injection_settings.h"
@@ -20,8 +26,11 @@
 
 namespace slides {
 
-/// Reads the rows of a particle file into injector (rows, rowsGiveSpin, rowsGiveTemperature); a
-/// bad file throws InputError naming file:line and column.
+/// The format of file, from its first bytes; InputError if it cannot be read.
+ParticleFileFormat particleFileFormat(const std::filesystem::path& file);
+
+/// Reads the rows of a particle file of injector.file.format into injector (rows, rowsGiveSpin,
+/// rowsGiveTemperature); a bad file throws InputError naming file:line and column or key.
 void readParticleFile(const std::filesystem::path& file, InjectorSettings& injector);
 
 } // namespace slides

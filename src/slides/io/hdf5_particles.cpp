@@ -15,13 +15,13 @@ std::filesystem::path partialPath(const std::filesystem::path& directory) {
     return directory / (std::string(ParticlesHdf5::fileName) + ".partial");
 }
 
-std::string frameGroup(std::size_t index) {
+} // namespace
+
+std::string particlesFrameGroup(std::size_t index) {
     char group[48];
     std::snprintf(group, sizeof group, "/frames/%06zu", index);
     return group;
 }
-
-} // namespace
 
 ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::string& caseName)
     : directory_(directory) {
@@ -35,7 +35,7 @@ ParticlesHdf5::ParticlesHdf5(const std::filesystem::path& directory, const std::
 void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
     if (!frame.consistent()) throw std::invalid_argument("particle frame arrays differ in length");
     const std::size_t count = frame.id.size();
-    const std::string group = frameGroup(frames_.size());
+    const std::string group = particlesFrameGroup(frames_.size());
     const Hdf5File& file = *file_;
     const Hdf5Handle created = file.createGroup(group);
     const hid_t g = created.get();

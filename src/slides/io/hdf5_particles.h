@@ -35,9 +35,13 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace slides {
+
+/// The group of frame index in particles.h5: "/frames/000003".
+std::string particlesFrameGroup(std::size_t index);
 
 class ParticlesHdf5 {
 public:
