@@ -26,6 +26,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -1096,6 +1097,21 @@ TEST(FileInjection, OpenFoamPositionsListStartsItsParticlesAtU0WithDrawnSizes) {
                                          0)));
     ASSERT_EQ(fixed.size(), 2u);
     EXPECT_EQ(fixed.radius[1], 80e-6);
+    // Binary: the length, then the raw little-endian doubles between the parentheses.
+    const std::array<double, 6> raw{0.001, 0, 0, 1.0 / 3000, -1e-4, 0};
+    std::string binary = foamHeader;
+    binary.replace(binary.find("ascii"), 5, "binary");
+    binary += "2\n(";
+    binary.append(reinterpret_cast<const char*>(raw.data()), sizeof raw);
+    binary += ")\n";
+    std::ofstream(scratch.path / "constant" / "kinematicCloudPositions", std::ios::binary)
+        << binary;
+    const ParticleCloud read = injectAll(
+        sceneOf(scratch, sprayDictionary(fileInjector("bed", "constant/kinematicCloudPositions",
+                                                      "fileCoeffs { velocity (20 1 0); }"),
+                                         0)));
+    ASSERT_EQ(read.size(), 2u);
+    EXPECT_TRUE(read.position[1] == Vec3(1.0 / 3000, -1e-4, 0));
 }
 
 /// Runs the case of dictionary in scratch, which must be refused with exit status 2, one
