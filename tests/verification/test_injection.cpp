@@ -940,6 +940,9 @@ TEST(FileInjection, RunFromAFrameContinuesTheFirstRunBitForBit) {
     ASSERT_EQ(runTo(second, plainSpray(fileInjector("fromA", fromA, time), 0, frameTime)), 0)
         << test::slurp(second.path / "log");
 
+    const auto summary = nlohmann::json::parse(test::slurp(second.path / "out" / "summary.json"));
+    EXPECT_EQ(summary["settings"]["injectors"]["fromA"]["file"],
+              nlohmann::json({{"format", "particlesH5"}, {"source", "frame"}, {"frame", 1}}));
     const Hdf5File a(fromA, Hdf5Access::readOnly);
     const Hdf5File b(second.path / "out" / "particles.h5", Hdf5Access::readOnly);
     ASSERT_EQ(a.readDouble("/frames/000001", "time"), frameTime);

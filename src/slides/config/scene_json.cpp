@@ -33,7 +33,20 @@ nlohmann::json injectorSettings(const InjectorSettings& injector) {
                             {"centre", vec(injector.nozzle.centre)},
                             {"axis", vec(injector.nozzle.axis)},
                             {"radius", injector.nozzle.radius}};
-    if (injector.model == InjectionModel::file) return entry;
+    if (injector.model == InjectionModel::file) {
+        const ParticleFileSettings& file = injector.file;
+        entry["file"] = {{"format", nameOf(particleFileFormatNames(), file.format)}};
+        if (file.format == ParticleFileFormat::particlesH5)
+            entry["file"]["source"] = nameOf(previousRunSourceNames(), file.source);
+        if (file.format == ParticleFileFormat::particlesH5 &&
+            file.source == PreviousRunSource::frame)
+            entry["file"]["frame"] = file.frame;
+        if (file.format == ParticleFileFormat::foamPositions) {
+            entry["file"]["velocity"] = vec(file.velocity);
+            entry["radiusDistribution"] = radiusDistribution(injector.radius);
+        }
+        return entry;
+    }
     if (injector.model == InjectionModel::ensemble) {
         PackedEnsemble packed;
         for (const ParticleRow& row : injector.rows) packed.radii.push_back(row.radius);

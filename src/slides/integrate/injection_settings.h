@@ -165,6 +165,18 @@ struct PatchInjectionSettings {
 /// (integrate/particle_file.h).
 enum class ParticleFileFormat { csv, particlesH5, foamPositions };
 
+struct ParticleFileFormatName {
+    ParticleFileFormat value;
+    std::string_view name;
+};
+
+/// The formats' names in the run summary (the format is not a key: the content tells it).
+constexpr std::array<ParticleFileFormatName, 3> particleFileFormatNames() {
+    return {{{ParticleFileFormat::csv, "csv"},
+             {ParticleFileFormat::particlesH5, "particlesH5"},
+             {ParticleFileFormat::foamPositions, "foamPositions"}}};
+}
+
 /// Which particles of a previous run's particles.h5 become the rows (integrate/previous_run.h).
 enum class PreviousRunSource { arrivals, frame };
 
