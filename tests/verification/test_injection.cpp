@@ -1161,6 +1161,9 @@ TEST(FileInjection, BadFramesAndPositionsListsAreRefusedAtFileLineAndKey) {
     expectRefused(fileInjector("fromA", frames, "fileCoeffs {\nsource frame; }"), "fileCoeffs {",
                   "key 'injectors.fromA.fileCoeffs.time': missing key (s), needed for source "
                   "frame");
+    expectRefused(fileInjector("rows", "constant/missing.csv", ""), "missing.csv",
+                  "key 'injectors.rows.file': no file " +
+                      (scratch.path / "constant" / "missing.csv").string());
     // Keys where they do not apply.
     std::ofstream(scratch.path / "constant" / "rows.csv")
         << "x y z u v w d\n0.001 0 0 1 0 0 1e-4\n";

@@ -506,6 +506,8 @@ void readFileInjector(const KeyReader& keys, const std::string& base, const Scen
             keys.fail(base + "." + given, "a file injector's particles are its rows");
     const std::filesystem::path given = keys.word(base + ".file");
     const std::filesystem::path file = given.is_absolute() ? given : scene.caseDirectory / given;
+    if (!std::filesystem::is_regular_file(file))
+        keys.fail(base + ".file", "no file " + file.string());
     injector.file.format = particleFileFormat(file);
     const std::string sizes = base + ".radiusDistribution";
     if (injector.file.format == ParticleFileFormat::foamPositions)
