@@ -106,4 +106,29 @@ inline void runSteps(ImpactScene& scene, double dt, long steps) {
     for (long n = 0; n < steps; ++n) step(scene, spring, load, dt);
 }
 
+/// Closing speed of a head-on impact along x: the first body's velocity less the second's.
+inline double closingSpeedAlongX(const ImpactScene& scene) {
+    return scene.first.sphere.velocity.x() -
+           (scene.second ? scene.second->sphere.velocity.x() : 0.0);
+}
+
+/// Restitution of a head-on impact along x at step dt, the touch falling at fraction phase of
+/// a step: the first sphere is placed 10 + (1 − phase) drifts from the wall or the second
+/// sphere's surface, which lie at x = 0 (the scenes of chung_ooi.h).
+inline double restitutionAtPhase(ImpactScene scene, double dt, double phase) {
+    const double approach = closingSpeedAlongX(scene);
+    scene.first.sphere.position.x() = -scene.first.sphere.radius - (11 - phase) * approach * dt;
+    runImpact(scene, dt);
+    return -closingSpeedAlongX(scene) / approach;
+}
+
+/// The largest |e_out/e − 1| over sixteen phases of the touch within a step of dt.
+inline double worstRestitutionError(const ImpactScene& scene, double dt, double restitution) {
+    double worst = 0;
+    for (int k = 0; k < 16; ++k)
+        worst = std::max(worst,
+                         std::abs(restitutionAtPhase(scene, dt, (k + 0.5) / 16) / restitution - 1));
+    return worst;
+}
+
 } // namespace slides::test

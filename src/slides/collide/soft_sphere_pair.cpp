@@ -15,7 +15,7 @@ ContactLoad contactLoad(const ContactPair& pair, const SoftContactLaw& law, doub
     const Vec3 slip = contactVelocityA - contactVelocityB;
     const double closingSpeed = -slip.dot(normal);
     const double normalForce =
-        normalContactForce(pair, law, overlap, closingSpeed, spring.largestOverlap);
+        normalContactForce(pair, law, overlap, closingSpeed, dt, spring.largestOverlap);
     const Vec3 tangentialForce =
         mindlinTangentialForce(spring, pair, law, overlap, normal, slip, normalForce, dt);
     const Vec3 nCrossFt = normal.cross(tangentialForce);

@@ -65,35 +65,56 @@ SoftContactLaw softContactLaw(double restitution, double friction) {
     return {0.5 * (elastic + damped), friction};
 }
 
+double dampingCoefficient(const ContactPair& pair, const SoftContactLaw& law, double overlap) {
+    switch (law.normalLaw) {
+    case NormalContactLaw::hertz: // γ_n = −2√(5/6) β √(S_n m*), S_n = 2E*√(R*δ)
+        return dampingFactor(law) *
+               std::sqrt(2.0 * pair.youngsModulus * contactRadius(pair, overlap) * pair.mass);
+    case NormalContactLaw::linearSpringDashpot: // γ = 2ζ√(k m*) (Eq. 2.6, 2.7)
+        return 2 * linearDampingRatio(law.restitution) * std::sqrt(law.normalStiffness * pair.mass);
+    case NormalContactLaw::viscoelasticHertz: // 3/2 K_n A √δ (Eq. 2.8)
+        return 2.0 * pair.youngsModulus * law.dissipativeTime * contactRadius(pair, overlap);
+    case NormalContactLaw::waltonBraun: return 0; // hysteresis, no dashpot
+    }
+    return 0;
+}
+
+double dampingPotential(const ContactPair& pair, const SoftContactLaw& law, double overlap) {
+    if (!(overlap > 0)) return 0;
+    // γ ∝ δ^p integrates to γ(δ) δ/(1 + p): p = 1/4 (hertz), 0 (linear), 1/2 (viscoelastic).
+    const double power = law.normalLaw == NormalContactLaw::hertz               ? 0.25
+                         : law.normalLaw == NormalContactLaw::viscoelasticHertz ? 0.5
+                                                                                : 0.0;
+    return dampingCoefficient(pair, law, overlap) * overlap / (1 + power);
+}
+
 double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
                         double closingSpeed) {
-    const double a = contactRadius(pair, overlap);
-    const double stiffness = 4.0 / 3.0 * pair.youngsModulus * a;                        // k_n
-    const double normalStiffness = 2.0 * pair.youngsModulus * a;                        // S_n
-    const double damping = dampingFactor(law) * std::sqrt(normalStiffness * pair.mass); // γ_n
-    return std::max(0.0, stiffness * overlap + damping * closingSpeed);
+    return std::max(0.0, elasticNormalForce(pair, law, overlap) +
+                             dampingCoefficient(pair, law, overlap) * closingSpeed);
 }
 
 double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
-                          double closingSpeed, double& largestOverlap) {
+                          double closingSpeed, double dt, double& largestOverlap) {
     largestOverlap = std::max(largestOverlap, overlap);
-    switch (law.normalLaw) {
-    case NormalContactLaw::hertz: return hertzNormalForce(pair, law, overlap, closingSpeed);
-    case NormalContactLaw::linearSpringDashpot: {
-        const double dampingRatio = linearDampingRatio(law.restitution);
-        const double damping = 2 * dampingRatio * std::sqrt(law.normalStiffness * pair.mass);
-        return law.normalStiffness * overlap + damping * closingSpeed;
-    }
-    case NormalContactLaw::viscoelasticHertz: {
-        const double stiffness = 4.0 / 3.0 * pair.youngsModulus * std::sqrt(pair.radius); // K_n
-        const double root = std::sqrt(overlap);
-        return std::max(0.0,
-                        stiffness * root * (overlap + 1.5 * law.dissipativeTime * closingSpeed));
-    }
-    case NormalContactLaw::waltonBraun:
+    if (law.normalLaw == NormalContactLaw::waltonBraun)
         return waltonBraunForce(law.normalStiffness, law.restitution, overlap, largestOverlap);
+    const double elastic = elasticNormalForce(pair, law, overlap);
+    const double damping = dampingCoefficient(pair, law, overlap);
+    double force = elastic + damping * closingSpeed;
+    if (dt > 0) {
+        // The step's kicks apply this force over [t − dt/2, t + dt/2], where the damping's
+        // impulse is Φ(δ(t + dt/2)) − Φ(δ(t − dt/2)): δ(t − dt/2) half a drift back, or the touch
+        // (Φ = 0) if the contact began within this drift; δ(t + dt/2) half a drift ahead at the
+        // velocity that the force leaves, u − F dt/m*: to first order in F, 1/(1 + γ dt/2m*).
+        const double drift = closingSpeed * dt;
+        const double windowStart =
+            overlap - drift > 0 ? dampingPotential(pair, law, overlap - 0.5 * drift) : 0.0;
+        const double impulse = dampingPotential(pair, law, overlap + 0.5 * drift) - windowStart;
+        force = (elastic + impulse / dt) / (1 + 0.5 * dt * damping / pair.mass);
     }
-    return 0;
+    // Only the linear spring–dashpot may pull (its closed form is the free damped oscillator's).
+    return law.normalLaw == NormalContactLaw::linearSpringDashpot ? force : std::max(0.0, force);
 }
 
 double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap) {

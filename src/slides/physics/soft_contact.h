@@ -57,16 +57,32 @@ double restitutionOfDampingRatio(double dampingRatio);
 /// restitutionOfDampingRatio by bisection (≈ 50 ms, once per material pair).
 SoftContactLaw softContactLaw(double restitution, double friction);
 
+/// Damping coefficient γ(δ) [N s/m] of the law at overlap δ > 0: its damping force is γ dδ/dt
+/// (hertz: γ_n ∝ δ^{1/4}; linearSpringDashpot: 2ζ√(k m*); viscoelasticHertz: 3/2 K_n A √δ;
+/// waltonBraun: 0).
+double dampingCoefficient(const ContactPair& pair, const SoftContactLaw& law, double overlap);
+
+/// The damping's potential Φ(δ) = ∫₀^δ γ [N s] (0 for δ ≤ 0): the damping force γ(δ) dδ/dt is
+/// dΦ/dt, so its impulse over any interval is the difference of Φ at the interval's ends.
+double dampingPotential(const ContactPair& pair, const SoftContactLaw& law, double overlap);
+
 /// Normal force [N] on overlap δ > 0 closing at dδ/dt (Eq. 2.4 with the damping of Eq. 2.6–2.8:
 /// k_n δ + γ_n dδ/dt), clamped at 0 so that the damping never pulls the bodies together.
 double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
                         double closingSpeed);
 
-/// Normal force [N] of the law on overlap δ > 0 closing at dδ/dt: Hertz as hertzNormalForce,
-/// the other laws as physics/contact_laws.h gives them. largestOverlap is the contact's δ_max
-/// so far, updated here (Walton–Braun's unloading starts from it).
+/// Normal force [N] of the law that a velocity Verlet step of length dt applies (its two half
+/// kicks, over [t − dt/2, t + dt/2]) at overlap δ > 0, reached by a drift closing at dδ/dt: the
+/// elastic force at δ, and the damping as its exact impulse over that window divided by dt, the
+/// difference of dampingPotential at the window's ends (the overlap half a drift back, or the
+/// touch if the contact began within the drift; half a drift ahead, at the closing speed this
+/// force leaves, to first order in it). Sampling γ(δ) dδ/dt instead would be first order in dt:
+/// γ_n grows as δ^{1/4} from the touch, and the half-step velocity lags. dt = 0 gives the law's
+/// instantaneous force. Only the linear spring–dashpot may pull; Walton–Braun has no dashpot.
+/// largestOverlap is the contact's δ_max so far, updated here (Walton–Braun's unloading
+/// starts from it).
 double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
-                          double closingSpeed, double& largestOverlap);
+                          double closingSpeed, double dt, double& largestOverlap);
 
 /// The conservative part of the law's normal force at overlap δ [N] (the loading curve of
 /// Walton–Braun): what the force less it does is dissipated.
