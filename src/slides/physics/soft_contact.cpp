@@ -79,13 +79,26 @@ double dampingCoefficient(const ContactPair& pair, const SoftContactLaw& law, do
     return 0;
 }
 
+namespace {
+
+/// The exponent p of the law's damping coefficient γ ∝ δ^p: 1/4 (hertz: γ_n ∝ √S_n ∝ δ^{1/4}),
+/// 1/2 (viscoelasticHertz), 0 (linearSpringDashpot; waltonBraun has none).
+double dampingExponent(const SoftContactLaw& law) {
+    switch (law.normalLaw) {
+    case NormalContactLaw::hertz: return 0.25;
+    case NormalContactLaw::viscoelasticHertz: return 0.5;
+    case NormalContactLaw::linearSpringDashpot:
+    case NormalContactLaw::waltonBraun: return 0;
+    }
+    return 0;
+}
+
+} // namespace
+
 double dampingPotential(const ContactPair& pair, const SoftContactLaw& law, double overlap) {
     if (!(overlap > 0)) return 0;
-    // γ ∝ δ^p integrates to γ(δ) δ/(1 + p): p = 1/4 (hertz), 0 (linear), 1/2 (viscoelastic).
-    const double power = law.normalLaw == NormalContactLaw::hertz               ? 0.25
-                         : law.normalLaw == NormalContactLaw::viscoelasticHertz ? 0.5
-                                                                                : 0.0;
-    return dampingCoefficient(pair, law, overlap) * overlap / (1 + power);
+    // γ ∝ δ^p integrates to γ(δ) δ/(1 + p).
+    return dampingCoefficient(pair, law, overlap) * overlap / (1 + dampingExponent(law));
 }
 
 double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
@@ -104,13 +117,22 @@ double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, do
     double force = elastic + damping * closingSpeed;
     if (dt > 0) {
         // The step's kicks apply this force over [t − dt/2, t + dt/2], where the damping's
-        // impulse is Φ(δ(t + dt/2)) − Φ(δ(t − dt/2)): δ(t − dt/2) half a drift back, or the touch
-        // (Φ = 0) if the contact began within this drift; δ(t + dt/2) half a drift ahead at the
-        // velocity that the force leaves, u − F dt/m*: to first order in F, 1/(1 + γ dt/2m*).
+        // impulse is Φ(δ(t + dt/2)) − Φ(δ(t − dt/2)): δ(t − dt/2) half a drift d back, or the
+        // touch (Φ = 0) if the contact began within this drift; δ(t + dt/2) half a drift ahead
+        // at the velocity that the force leaves, u − F dt/m*: to first order in F, a factor
+        // 1/(1 + γ dt/2m*) on the force.
         const double drift = closingSpeed * dt;
-        const double windowStart =
-            overlap - drift > 0 ? dampingPotential(pair, law, overlap - 0.5 * drift) : 0.0;
-        const double impulse = dampingPotential(pair, law, overlap + 0.5 * drift) - windowStart;
+        double impulse;
+        if (std::abs(drift) < overlap) {
+            // Well inside the contact, |d| < δ: Φ(δ + d/2) − Φ(δ − d/2) = γ(δ) d (1 + p(p − 1)/24
+            // (d/δ)² + …), the next term below 5e-4 of it. No root beyond γ's own.
+            const double ratio = drift / overlap, exponent = dampingExponent(law);
+            impulse = damping * drift * (1 + exponent * (exponent - 1) / 24 * ratio * ratio);
+        } else {
+            const double start =
+                overlap - drift > 0 ? dampingPotential(pair, law, overlap - 0.5 * drift) : 0.0;
+            impulse = dampingPotential(pair, law, overlap + 0.5 * drift) - start;
+        }
         force = (elastic + impulse / dt) / (1 + 0.5 * dt * damping / pair.mass);
     }
     // Only the linear spring–dashpot may pull (its closed form is the free damped oscillator's).
