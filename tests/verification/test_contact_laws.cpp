@@ -88,6 +88,26 @@ SoftContactLaw lawOf(NormalContactLaw normalLaw, double stiffness, double restit
             .dissipativeTime = dissipativeTime};
 }
 
+TEST(DampingPotential, IsTheIntegralOfEachLawsDampingCoefficient) {
+    // Φ(δ) = ∫₀^δ γ: its central difference at ε = 1e-4 δ is γ to p(1 − p)/6 (ε/δ)² < 1e-9 for
+    // γ ∝ δ^p, and Φ(0) = 0; the step integrates the dashpot through it (normalContactForce).
+    const ImpactCase c{"", aluminiumOxide, 2.5e-3, 3.9, true, 0.5};
+    const double k = secantStiffness(c);
+    for (const SoftContactLaw& law :
+         {softContactLaw(0.5, 0), lawOf(NormalContactLaw::linearSpringDashpot, k, 0.5),
+          lawOf(NormalContactLaw::viscoelasticHertz, 0, 1, 1e-6),
+          lawOf(NormalContactLaw::waltonBraun, k, 0.5)}) {
+        const ImpactScene scene = sceneOf(c, law);
+        const double overlap = 1e-6, step = 1e-4 * overlap;
+        const double slope = (dampingPotential(scene.pair, law, overlap + step) -
+                              dampingPotential(scene.pair, law, overlap - step)) /
+                             (2 * step);
+        EXPECT_NEAR(slope, dampingCoefficient(scene.pair, law, overlap),
+                    1e-7 * dampingCoefficient(scene.pair, law, overlap));
+        EXPECT_EQ(dampingPotential(scene.pair, law, 0.0), 0.0);
+    }
+}
+
 class ChungOoiImpact : public testing::TestWithParam<ImpactCase> {};
 
 TEST_P(ChungOoiImpact, LinearSpringDashpotRestitutesAndLastsAsTheDampedOscillator) {

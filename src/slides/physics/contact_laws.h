@@ -37,7 +37,8 @@ struct NormalContactLawName {
 };
 
 // How to add a law: an enumerator, its name here, its cases in physics/soft_contact.cpp's
-// normalContactForce and elasticNormalForce, and its contact duration in softContactDuration.
+// elasticNormalForce, dampingCoefficient and dampingExponent (or, without a dashpot, its force in
+// normalContactForce), and its contact duration in softContactDuration.
 constexpr std::array<NormalContactLawName, 4> normalContactLawNames() {
     return {{{NormalContactLaw::hertz, "hertz"},
              {NormalContactLaw::linearSpringDashpot, "linearSpringDashpot"},

@@ -11,6 +11,9 @@
 //   S_n = 2E*√(R*δ), k_n = 4/3 E*√(R*δ), S_t = 8G*√(R*δ), k_t = S_t,
 //   γ_n = −2√(5/6) β √(S_n m*), γ_t = −2√(5/6) β √(S_t m*), β = ln e / √(ln²e + π²),
 //   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
+// A velocity Verlet step applies the damping γ dδ/dt as the difference of its potential
+// Φ(δ) = ∫₀^δ γ over the window of its kicks, from the touch in a contact's first step
+// (normalContactForce): second order in dt, where sampling γ at the half-step velocity is first.
 // Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
 // the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
 // The other normal laws of Eq. 2.6–2.10 (physics/contact_laws.h) and the regularised friction of
