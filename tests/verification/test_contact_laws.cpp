@@ -246,7 +246,7 @@ TEST(ContactLawsAtTwentyStepsPerContact, RestitutionWorstOverTheTouchPhaseAndIts
     // alike): linear 8.3e-2, 3.5e-2, 1.1e-2 for e = 0.2, 0.5, 0.8; Walton–Braun 1.7e-2,
     // 2.5e-3, 1.5e-3; viscoelastic 1.5e-3, 1.1e-3, 4.0e-4; elastic 2.4e-4 (linear, Walton–
     // Braun), 4.2e-4 (viscoelastic). Orders from 20 to 80 steps: linear 1.0–1.1, Walton–Braun
-    // 2.1–3.4, viscoelastic 1.7–2.2, elastic 2.5–3.0.
+    // 2.1–3.4, viscoelastic 1.7–2.3, elastic 2.5–3.0.
     struct Expected {
         double bound, order;
     };
