@@ -302,13 +302,19 @@ void FoamCarrier::sampleLevelsAt(const TetLocation& at, const Vec3& x, const Mat
     if (needs.temperature) out.temperature[i] = scalar(2);
 }
 
-void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs,
-                           CarrierSample& out, std::size_t i,
-                           const LevelCache<FoamLevel>::Pair* levels) const {
-    Mat3 rotation = Mat3::Identity();
+Vec3 FoamCarrier::meshPoint(const Vec3& point, Mat3& rotation) const {
+    rotation.setIdentity();
     Vec3 x = point;
     if (wedge_) x = wedge_->toWedge(point, rotation);
     if (emptyNormal_) x -= (x - mesh_.cellCentres[0]).dot(*emptyNormal_) * *emptyNormal_;
+    return x;
+}
+
+void FoamCarrier::sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs,
+                           CarrierSample& out, std::size_t i,
+                           const LevelCache<FoamLevel>::Pair* levels) const {
+    Mat3 rotation;
+    const Vec3 x = meshPoint(point, rotation);
     if (LatticeWeights weights; lattice_ && lattice_->locate(x, weights)) {
         const Vec3 velocity = lattice_->velocity(weights);
         out.velocity[i] = rotation * velocity;

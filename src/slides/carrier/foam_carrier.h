@@ -81,6 +81,14 @@ public:
     std::optional<Box> bounds() const override;
     std::optional<Vec3> planeNormal() const override { return emptyNormal_; }
     std::optional<AxisymmetricFrame> axisymmetry() const override;
+    /// The point of the mesh that stands for the 3-D point: on a wedge, the centre plane's point
+    /// at its axial position and radius (rotation: the turn that takes it back to the point); on
+    /// a 2-D mesh, its projection on the cell centres' plane; else the point itself.
+    Vec3 meshPoint(const Vec3& point, Mat3& rotation) const;
+    Vec3 meshPoint(const Vec3& point) const {
+        Mat3 rotation;
+        return meshPoint(point, rotation);
+    }
     std::vector<std::string> boundaryNames() const override;
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
     /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against

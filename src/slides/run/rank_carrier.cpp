@@ -52,10 +52,6 @@ RankCarrier::RankCarrier(const std::filesystem::path& caseDirectory,
                                               settings);
         addressing =
             readPartAddressing(foamProcessorDirectory(caseDirectory, ranks.rank()), part_->mesh());
-        if (part_->wedge() || part_->planeNormal())
-            throw InputError(caseDirectory.string(), 0, "",
-                             "parallel runs support 3-D meshes only so far (this one is a wedge or "
-                             "2-D mesh): run it without -parallel on the whole case");
         const auto& patches = part_->mesh().patches;
         for (const FoamPatch& patch : patches) {
             if (patch.type != PatchType::processor) {
@@ -70,11 +66,13 @@ RankCarrier::RankCarrier(const std::filesystem::path& caseDirectory,
     });
     part_->shareProcessorPoints(
         addressing, [&](std::span<const std::byte> bytes) { return ranks_.allGather(bytes); });
+    // The parts' boxes (a wedge part's swept about the axis) bound the whole mesh's.
     std::array<double, 3> low{}, high{};
     const FoamMesh& mesh = part_->mesh();
+    const Box part = *part_->bounds();
     for (int axis = 0; axis < 3; ++axis) {
-        low[axis] = mesh.boundsMin[axis];
-        high[axis] = mesh.boundsMax[axis];
+        low[axis] = part.min[axis];
+        high[axis] = part.max[axis];
     }
     ranks_.min(low);
     ranks_.max(high);

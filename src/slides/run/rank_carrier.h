@@ -46,6 +46,10 @@ public:
     /// Patch name's faces on every rank, in rank order.
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
     std::optional<Box> bounds() const override { return bounds_; }
+    /// A wedge's frame and a 2-D mesh's plane, as every part finds them (each from its own
+    /// faces of the wedge or empty patches: the same to round-off).
+    std::optional<AxisymmetricFrame> axisymmetry() const override { return part_->axisymmetry(); }
+    std::optional<Vec3> planeNormal() const override { return part_->planeNormal(); }
     std::string describe() const override { return description_; }
 
     /// This rank's part.

@@ -71,7 +71,8 @@ int RankExchange::patchTowards(int rank) const {
 
 std::int32_t RankExchange::walk(const Vec3& point, std::int32_t location, int& transitFace) const {
     transitFace = -1;
-    const TetLocation at = carrier_.part().locator().locateFrom(point, location);
+    const FoamCarrier& part = carrier_.part();
+    const TetLocation at = part.locator().locateFrom(part.meshPoint(point), location);
     if (at.found()) return at.tet;
     if (at.exitPatch >= carrier_.firstProcessorPatch()) {
         if (at.exitFace >= 0) transitFace = at.exitFace;
@@ -181,7 +182,8 @@ std::size_t RankExchange::exchange(ParticleCloud& cloud, std::size_t firstFresh,
                     cloud.modelState.push_back(take<double>(message, at));
                 // On from the cell behind the matching face.
                 const std::size_t i = cloud.size() - 1;
-                const TetLocation found = locator.locate(cloud.position[i], mesh.owner[face]);
+                const TetLocation found =
+                    locator.locate(carrier_.part().meshPoint(cloud.position[i]), mesh.owner[face]);
                 int next = -1;
                 if (found.found()) {
                     cloud.carrierLocation[i] = found.tet;
