@@ -5,7 +5,8 @@
 // checked by the Kolmogorov–Smirnov statistic against its 1 % critical value 1.628/√n. On a
 // wedge the patch stands for the surface it sweeps about the axis: a 5° wedge's inlet face
 // sweeps a disc, whose points have r² uniform and a uniform azimuth; its outer face a cylinder,
-// whose points lie at its radius, uniform along it.
+// whose points lie at its radius, uniform along it. Every point lies in the sampler's bounds, the
+// swept disc's.
 #include "../support/kolmogorov_smirnov.h"
 #include "slides/core/random.h"
 #include "slides/integrate/patch_sampler.h"
@@ -38,6 +39,7 @@ TEST(PatchSampler, PointsAreUniformInAreaOverThePatch) {
         RandomStream random(7, static_cast<std::uint64_t>(id), RandomPurpose::injection, 0);
         const double a = random.uniform(), b = random.uniform(), c = random.uniform();
         const PatchSampler::Point point = sampler.draw(a, b, c);
+        ASSERT_TRUE(insideBox(sampler.bounds(), point.position)) << "draw " << id;
         if (point.position.x() < 2) {
             // Off the face by 1e-9 √(2 · area) along the normal into the gas (+z).
             ASSERT_NEAR(point.position.z(), 1e-9, 1e-15);
@@ -87,6 +89,7 @@ TEST(PatchSampler, OnAWedgeTheInletFaceSweepsAUniformDisc) {
         RandomStream random(11, static_cast<std::uint64_t>(id), RandomPurpose::injection, 0);
         const double a = random.uniform(), b = random.uniform(), c = random.uniform();
         const PatchSampler::Point point = sampler.draw(a, b, c, random.uniform());
+        ASSERT_TRUE(insideBox(sampler.bounds(), point.position)) << "draw " << id;
         ASSERT_GT(point.position.x(), 0); // in the gas
         ASSERT_LT(point.position.x(), 1e-10);
         ASSERT_NEAR((point.normal - Vec3::UnitX()).norm(), 0, 1e-15);
@@ -100,6 +103,15 @@ TEST(PatchSampler, OnAWedgeTheInletFaceSweepsAUniformDisc) {
     const double critical = test::kolmogorovSmirnovCritical(draws);
     EXPECT_LT(test::kolmogorovSmirnov(squaredRadius, uniform), critical);
     EXPECT_LT(test::kolmogorovSmirnov(azimuth, uniform), critical);
+    // Its bounds are the swept disc's: of radius R = √(c² + s²) (the face's corners), wider by
+    // a hair (1e-9 √(2 area) = 1.5e-11 m) and the rounding margin (1e-12 R) at most.
+    const double corner = std::hypot(wedgeC, wedgeS);
+    for (int axis : {1, 2}) {
+        EXPECT_NEAR(sampler.bounds().min[axis], -corner, 1e-10) << axis;
+        EXPECT_NEAR(sampler.bounds().max[axis], corner, 1e-10) << axis;
+    }
+    EXPECT_NEAR(sampler.bounds().min.x(), 0, 1e-10);
+    EXPECT_NEAR(sampler.bounds().max.x(), 0, 1e-10);
     // The wedge's own face, not swept, would give r uniform, not r²: the test tells them apart.
     EXPECT_GT(test::kolmogorovSmirnov(squaredRadius, [](double f) { return std::sqrt(f); }),
               critical);
@@ -118,6 +130,7 @@ TEST(PatchSampler, OnAWedgeTheOuterFaceSweepsAUniformCylinder) {
         RandomStream random(12, static_cast<std::uint64_t>(id), RandomPurpose::injection, 0);
         const double u = random.uniform(), v = random.uniform(), w = random.uniform();
         const PatchSampler::Point point = sampler.draw(u, v, w, random.uniform());
+        ASSERT_TRUE(insideBox(sampler.bounds(), point.position)) << "draw " << id;
         const Vec3 across(0, point.position.y(), point.position.z());
         // On the centre plane's profile, r = c (less the hair into the gas), whatever the point
         // of the face drawn (the face's corners are at R = 0.05 m).

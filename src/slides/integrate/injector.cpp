@@ -38,7 +38,6 @@ Injector::Injector(const InjectorSettings& settings, bool avoidOverlap)
       startsAtNormalGasVelocity_(settings.model == InjectionModel::patch &&
                                  !settings.patch.velocity),
       avoidOverlap_(avoidOverlap && !settings.givesRows() &&
-                    settings.model != InjectionModel::patch &&
                     settings.injection.mode != InjectionMode::lattice) {}
 
 double Injector::injectionTime(ParticleId id) const {
@@ -134,23 +133,23 @@ void Injector::drawStarts(std::span<const ParticleId> ids, const ParticleCloud& 
     const double largest = std::max(
         newest,
         cloud.radius.empty() ? 0.0 : *std::max_element(cloud.radius.begin(), cloud.radius.end()));
-    const Vec3& centre = settings_.nozzle.centre;
-    const double reach = settings_.nozzle.radius + newest + largest;
-    nearby_.clear();
-    for (std::size_t i = 0; i < cloud.size(); ++i)
-        if ((cloud.position[i] - centre).squaredNorm() < reach * reach)
-            nearby_.emplace_back(cloud.position[i], cloud.radius[i]);
+    nearby_->gather(cloud, startBounds(), newest + largest, count);
     for (std::size_t k = 0; k < count; ++k) {
         for (std::uint32_t attempt = 0; attempt < attempts; ++attempt) {
             keep(k, drawStart(ids[k], attempt));
-            const bool clear = std::none_of(nearby_.begin(), nearby_.end(), [&](const auto& other) {
-                const double contact = radii_[k] + other.second;
-                return (positions_[k] - other.first).squaredNorm() < contact * contact;
-            });
-            if (clear) break;
+            if (!nearby_->overlaps(positions_[k], radii_[k])) break;
         }
-        nearby_.emplace_back(positions_[k], radii_[k]);
+        nearby_->add(positions_[k], radii_[k]);
     }
+}
+
+Box Injector::startBounds() const {
+    if (settings_.model == InjectionModel::patch) return patch_->bounds();
+    // The disc: its rim reaches R √(1 − axisᵢ²) along axis i from its centre.
+    const JetNozzle& nozzle = settings_.nozzle;
+    const Vec3 rim =
+        nozzle.radius * (1 - nozzle.axis.array().square()).cwiseMax(0.0).sqrt().matrix();
+    return {nozzle.centre - rim, nozzle.centre + rim};
 }
 
 void Injector::injectUntil(double until, double time, const CarrierField& carrier,
@@ -174,6 +173,7 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         addedVelocities_ = std::vector<Vec3>();
         patchNormals_ = std::vector<Vec3>();
         radii_ = std::vector<double>();
+        nearby_.reset();
         gas_ = CarrierSample{};
     }
 }
@@ -187,6 +187,7 @@ void Injector::add(std::span<const ParticleId> ids, double time, const CarrierFi
                    ParticleCloud& cloud) {
     if (settings_.model == InjectionModel::patch && !patch_)
         patch_.emplace(carrier.patchTriangles(settings_.patch.name), carrier.axisymmetry());
+    if (avoidOverlap_ && !nearby_) nearby_.emplace(planeConstraintOf(carrier));
     const std::size_t count = ids.size();
     radii_.resize(count);
     for (std::size_t k = 0; k < count; ++k)

@@ -12,14 +12,15 @@
 //         velocity or the gas velocity's part normal to the patch, (U·n) n.
 //   ensemble  the rows of a packing (integrate/ensemble.h), at rest, all at the start time.
 //
-// With collisions on (avoidOverlap), a disc or cone particle is not placed overlapping any
-// particle in flight or placed before it: the rule is that its start point is redrawn, from the
-// stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre lies
-// within the disc radius plus the two radii of the injector's centre; after 64 attempts (a disc
-// already full) it keeps the last draw. Without an overlap the first draw stands, as without
-// the rule. A file's rows, a lattice and a patch's particles are placed as drawn. Each check runs
-// over every particle near the injector: cheap for rate injection (a few a step), quadratic in the
-// count for many particles injected at once (allAtStart).
+// With collisions on (avoidOverlap), a disc, cone or patch particle is not placed overlapping
+// any particle in flight or placed before it: the rule is that its start point is redrawn, from
+// the stream (seed, id, attempt), until its sphere is clear of every other sphere whose centre
+// lies within the two radii of the box that holds the injector's start points (the disc's, the
+// patch's or on a wedge its swept surface's); after 64 attempts (an injector already full) it
+// keeps the last draw. Without an overlap the first draw stands, as without the rule. On a 2-D
+// carrier the spheres are compared on the mid-plane, where the stepper holds them. A file's rows
+// and a lattice are prescribed: placed as given. The spheres near the injector are binned
+// (integrate/nearby_spheres.h), so each check is O(1) however many crowd it.
 //
 // Particle firstId + k is injected at t_k = startTime + k / rate (or startTime; a file row's
 // time). Its radius, position and random velocity come from counter-based random streams keyed
@@ -37,6 +38,7 @@
 #include "slides/carrier/jet_frame.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injection_settings.h"
+#include "slides/integrate/nearby_spheres.h"
 #include "slides/integrate/patch_sampler.h"
 #include "slides/integrate/size_distribution.h"
 
@@ -98,6 +100,8 @@ private:
     /// The starts of the new particles ids, each clear of the others near the injector
     /// (avoidOverlap_) or the first draw.
     void drawStarts(std::span<const ParticleId> ids, const ParticleCloud& cloud);
+    /// A box holding every start point a draw gives (disc, cone: the disc; patch: the patch).
+    Box startBounds() const;
     /// Adds the particles ids at time: radius, start, velocity (the gas sampled once).
     void add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
              ParticleCloud& cloud);
@@ -114,7 +118,7 @@ private:
     std::vector<Vec3> patchNormals_;
     std::optional<PatchSampler> patch_; ///< model patch: its faces, from the carrier
     std::vector<double> radii_;
-    std::vector<std::pair<Vec3, double>> nearby_; ///< centres and radii near the injector
+    std::optional<NearbySpheres> nearby_; ///< avoidOverlap_: the spheres near the injector
     CarrierSample gas_;
 };
 

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
+#include "slides/core/box.h"
 
 #include <optional>
 #include <vector>
@@ -44,11 +45,16 @@ public:
     bool swept() const { return sweep_.has_value(); }
     /// Total area [m²], of the swept surface on a wedge.
     double area() const;
+    /// A box holding every point draw returns: the faces' (with the hair into the gas and a
+    /// margin for rounding), or on a wedge the box of the cylinder about the axis that holds
+    /// the swept surface.
+    const Box& bounds() const { return bounds_; }
 
 private:
     std::vector<PatchTriangle> triangles_;
     std::vector<double> cumulativeArea_; ///< of triangles [0, k]
     std::optional<AxisymmetricFrame> sweep_;
+    Box bounds_;
 };
 
 } // namespace slides

@@ -13,8 +13,7 @@ void PlaneConstraint::hold(ParticleCloud& cloud) const {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
-        // In-plane part plus the mid-plane's offset: exact for a normal along an axis.
-        cloud.position[i] = inPlane(cloud.position[i]) + midPlane_ * normal_;
+        cloud.position[i] = onMidPlane(cloud.position[i]);
         cloud.velocity[i] = inPlane(cloud.velocity[i]);
     }
     // Model state, each array as long as its model has filled it (new particles get theirs

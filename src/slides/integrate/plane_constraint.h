@@ -31,6 +31,10 @@ public:
     /// fluctuation).
     void project(std::vector<Vec3>& vectors) const;
 
+    /// Where hold puts a particle at point: on the mid-plane (its in-plane part plus the
+    /// mid-plane's offset, exact for a normal along an axis).
+    Vec3 onMidPlane(const Vec3& point) const { return inPlane(point) + midPlane_ * normal_; }
+
     const Vec3& normal() const { return normal_; }
     /// The mid-plane's offset along the normal, x·n [m].
     double midPlane() const { return midPlane_; }
