@@ -15,6 +15,7 @@
 #include <complex>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -77,6 +78,33 @@ TEST(HistoryClosedForm, ComplexErrorFunctionAgreesWithTheRealOne) {
                         slides::scaledComplementaryError(x),
                     1.0, 1e-11)
             << "x = " << x;
+}
+
+TEST(HistoryClosedForm, StartModeMatchesItsSeriesInExtendedPrecision) {
+    // φ = g_0, ∫φ = t g_2, ∫φ/√(t − τ) = √(π t) g_1 at x = α√t (α = 1), g_m(x) = Σ_{k≥m}
+    // (−x)^(k−m)/Γ(1 + k/2), summed here in long double (64-bit mantissa) to 60 terms; the
+    // power-series branch (x < 0.5) and the erfc one above it. Each is a few roundings of a
+    // sum of terms of alternating sign no larger than its first: 4 ulp of double.
+    const auto remainder = [](int m, long double x) {
+        long double sum = 0, power = 1;
+        for (int k = m; k < m + 60; ++k) {
+            sum += power / std::tgamma(1.0L + 0.5L * k);
+            power *= -x;
+        }
+        return sum;
+    };
+    for (double x = 0; x < 0.75; x += 1.0 / 64) {
+        const StartMode mode = startMode(1.0, x * x);
+        const double tolerance = 4 * std::numeric_limits<double>::epsilon();
+        EXPECT_NEAR(mode.value / static_cast<double>(remainder(0, x)), 1.0, tolerance) << x;
+        if (x == 0) continue;
+        EXPECT_NEAR(mode.integral / (x * x) / static_cast<double>(remainder(2, x)), 1.0, tolerance)
+            << x;
+        EXPECT_NEAR(mode.history / (std::sqrt(std::numbers::pi) * x) /
+                        static_cast<double>(remainder(1, x)),
+                    1.0, tolerance)
+            << x;
+    }
 }
 
 enum class Scheme { reference1, reference2, reference2NaiveStart, windowTail };

@@ -17,7 +17,7 @@ constexpr double rootPi = 1.7724538509055160273; // √π
 /// remainders g_m = 1/Γ(1 + m/2) − x g_{m+1} that the start-mode integrals (m ≤ 2) and the spin
 /// kernel's weights (m ≤ 4) need.
 template <std::size_t orders> std::array<double, orders> erfcSeriesRemainders(double x) {
-    constexpr std::size_t terms = 30;
+    constexpr std::size_t chains = 4, terms = 32; // terms a multiple of chains
     static const auto inverseGamma = [] {
         std::array<double, terms + orders> table{};
         for (std::size_t k = 0; k < table.size(); ++k)
@@ -32,12 +32,14 @@ template <std::size_t orders> std::array<double, orders> erfcSeriesRemainders(do
     }
     // For x < 0.5: the power series of the last g (term k below 0.5^k/Γ(1 + k/2), under 1e-17
     // of the first after 30 terms), then the recursion downwards, which multiplies errors by x.
-    double power = 1, sum = 0;
-    for (std::size_t k = orders - 1; k < orders - 1 + terms; ++k) {
-        sum += power * inverseGamma[k];
-        power *= -x;
-    }
-    g[orders - 1] = sum;
+    // The series as four Horner chains in x⁴, Σ_r (−x)^r Σ_j c_{4j+r} x^{4j}, independent so that
+    // they overlap in the pipeline (one chain of 32 dependent steps is latency-bound).
+    const double x2 = x * x, x4 = x2 * x2;
+    std::array<double, chains> chain{};
+    for (std::size_t j = terms / chains; j-- > 0;)
+        for (std::size_t r = 0; r < chains; ++r)
+            chain[r] = chain[r] * x4 + inverseGamma[orders - 1 + chains * j + r];
+    g[orders - 1] = (chain[0] - x * chain[1]) + x2 * (chain[2] - x * chain[3]);
     for (std::size_t m = orders - 1; m-- > 0;) g[m] = inverseGamma[m] - x * g[m + 1];
     return g;
 }
