@@ -352,33 +352,44 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
     }
     const bool firstEntersTail = shortFirst && steps == window;
     const double viscousTime = kernel_.viscousTime;
-    const auto advanced = [&](std::size_t i, const Vec3& sum) -> Vec3 {
-        const double spectrum =
-            viscousTime == 0 ? 1.0 : viscousTime / (layout_.tail.timescale[i] + viscousTime);
-        const double newWeight =
-            firstEntersTail ? tailEntryWeights(layout_.tail.amplitude[i], layout_.tail.timescale[i],
-                                               window * layout_.h, firstStep)
-                                  .newer
-                            : layout_.tailNewWeight[i];
-        return layout_.tailDecay[i] * sum +
-               spectrum * (newWeight * leavingNewer + layout_.tailOldWeight[i] * leavingOlder);
+    const bool regular = viscousTime == 0 && !firstEntersTail; // the layout's weights as they are
+    const double* decay = layout_.tailDecay.data();
+    const double* newerWeight = layout_.tailNewWeight.data();
+    const double* olderWeight = layout_.tailOldWeight.data();
+    const std::array<double, 3> newer{leavingNewer.x(), leavingNewer.y(), leavingNewer.z()};
+    const std::array<double, 3> older{leavingOlder.x(), leavingOlder.y(), leavingOlder.z()};
+    std::array<double, 3> total{known.x(), known.y(), known.z()};
+    // F_i ← e^{−h/θ_i} F_i + weights · (ρ leaving the window), kept as Sum (double or float),
+    // added to the total as kept; the arrays' pointers hoisted, as the state could alias them.
+    const auto advance = [&]<typename Sum>(std::size_t i, Sum* sum) {
+        double newWeight = newerWeight[i], spectrum = 1.0;
+        if (!regular) {
+            const double theta = layout_.tail.timescale[i];
+            if (viscousTime != 0) spectrum = viscousTime / (theta + viscousTime);
+            if (firstEntersTail)
+                newWeight = tailEntryWeights(layout_.tail.amplitude[i], theta, window * layout_.h,
+                                             firstStep)
+                                .newer;
+        }
+        for (std::size_t c = 0; c < 3; ++c) {
+            sum[c] = static_cast<Sum>(
+                decay[i] * sum[c] + spectrum * (newWeight * newer[c] + olderWeight[i] * older[c]));
+            total[c] += sum[c];
+        }
     };
     const std::size_t doubleTerms = layout_.doubleTerms();
-    for (std::size_t i = 0; i < doubleTerms; ++i) {
-        Eigen::Map<Vec3> sum(doubleTail() + 3 * i);
-        sum = advanced(i, sum);
-        known += sum;
+    for (std::size_t i = 0; i < doubleTerms; ++i) advance(i, doubleTail() + 3 * i);
+    // The single sums through a local copy, a chunk at a time (the state is an array of double).
+    constexpr std::size_t chunk = 16;
+    std::array<float, 3 * chunk> singles;
+    for (std::size_t first = doubleTerms; first < layout_.tail.size(); first += chunk) {
+        const std::size_t count = std::min(chunk, layout_.tail.size() - first);
+        unsigned char* bytes = singleTail() + 3 * sizeof(float) * (first - doubleTerms);
+        std::memcpy(singles.data(), bytes, 3 * sizeof(float) * count);
+        for (std::size_t k = 0; k < count; ++k) advance(first + k, singles.data() + 3 * k);
+        std::memcpy(bytes, singles.data(), 3 * sizeof(float) * count);
     }
-    for (std::size_t i = doubleTerms; i < layout_.tail.size(); ++i) {
-        unsigned char* bytes = singleTail() + sizeof(SingleSum) * (i - doubleTerms);
-        SingleSum sum;
-        std::memcpy(sum.data(), bytes, sizeof(sum));
-        const Vec3 next = advanced(i, Vec3(sum[0], sum[1], sum[2]));
-        sum = {static_cast<float>(next.x()), static_cast<float>(next.y()),
-               static_cast<float>(next.z())};
-        std::memcpy(bytes, sum.data(), sizeof(sum));
-        known += Vec3(sum[0], sum[1], sum[2]); // as kept
-    }
+    known = Vec3(total[0], total[1], total[2]);
     return known;
 }
 

@@ -207,7 +207,6 @@ public:
 
 private:
     Vec3 lagged(int lag) const { return Vec3(state_ + 3 * lag); }
-    using SingleSum = std::array<float, 3>; ///< a single-precision term's sum, copied in and out
     double* doubleTail() const { return state_ + 3 * (layout_.window + 1); }
     unsigned char* singleTail() const {
         return reinterpret_cast<unsigned char*>(doubleTail() + 3 * layout_.doubleTerms());
