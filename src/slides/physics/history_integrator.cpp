@@ -17,11 +17,22 @@ constexpr double rootPi = 1.7724538509055160273; // √π
 /// remainders g_m = 1/Γ(1 + m/2) − x g_{m+1} that the start-mode integrals (m ≤ 2) and the spin
 /// kernel's weights (m ≤ 4) need.
 template <std::size_t orders> std::array<double, orders> erfcSeriesRemainders(double x) {
-    constexpr std::size_t chains = 4, terms = 32; // terms a multiple of chains
+    constexpr std::size_t chains = 4, longest = 8, terms = chains * longest;
     static const auto inverseGamma = [] {
         std::array<double, terms + orders> table{};
         for (std::size_t k = 0; k < table.size(); ++k)
             table[k] = 1.0 / std::tgamma(1.0 + 0.5 * static_cast<double>(k));
+        return table;
+    }();
+    // reach[s]: the largest x at which s steps of the chains below suffice, their first omitted
+    // term x^{4s}/Γ(1 + k/2) (which bounds the rest, alternating and falling) under 1e-17 of the
+    // first; 8 steps reach x = 0.84.
+    static const auto reach = [] {
+        std::array<double, longest + 1> table{};
+        for (std::size_t steps = 1; steps <= longest; ++steps)
+            table[steps] = std::pow(1e-17 * inverseGamma[orders - 1] /
+                                        inverseGamma[orders - 1 + chains * steps],
+                                    1.0 / static_cast<double>(chains * steps));
         return table;
     }();
     std::array<double, orders> g{};
@@ -30,13 +41,15 @@ template <std::size_t orders> std::array<double, orders> erfcSeriesRemainders(do
         for (std::size_t m = 1; m < orders; ++m) g[m] = (inverseGamma[m - 1] - g[m - 1]) / x;
         return g;
     }
-    // For x < 0.5: the power series of the last g (term k below 0.5^k/Γ(1 + k/2), under 1e-17
-    // of the first after 30 terms), then the recursion downwards, which multiplies errors by x.
-    // The series as four Horner chains in x⁴, Σ_r (−x)^r Σ_j c_{4j+r} x^{4j}, independent so that
-    // they overlap in the pipeline (one chain of 32 dependent steps is latency-bound).
+    // For x < 0.5: the power series of the last g, then the recursion downwards, which
+    // multiplies errors by x. The series as four Horner chains in x⁴, Σ_r (−x)^r Σ_j c_{4j+r}
+    // x^{4j}, independent so that they overlap in the pipeline, only as long as x needs (a heavy
+    // particle in a gas keeps x = α√age small for long: few steps).
+    std::size_t steps = 1;
+    while (x > reach[steps]) ++steps;
     const double x2 = x * x, x4 = x2 * x2;
     std::array<double, chains> chain{};
-    for (std::size_t j = terms / chains; j-- > 0;)
+    for (std::size_t j = steps; j-- > 0;)
         for (std::size_t r = 0; r < chains; ++r)
             chain[r] = chain[r] * x4 + inverseGamma[orders - 1 + chains * j + r];
     g[orders - 1] = (chain[0] - x * chain[1]) + x2 * (chain[2] - x * chain[3]);
