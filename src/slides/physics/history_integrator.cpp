@@ -372,9 +372,10 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
     const std::array<double, 3> newer{leavingNewer.x(), leavingNewer.y(), leavingNewer.z()};
     const std::array<double, 3> older{leavingOlder.x(), leavingOlder.y(), leavingOlder.z()};
     std::array<double, 3> total{known.x(), known.y(), known.z()};
-    // F_i ← e^{−h/θ_i} F_i + weights · (ρ leaving the window), kept as Sum (double or float),
+    // F_i ← e^{−h/θ_i} F_i + weights · (ρ leaving the window), kept as Sum (double or float)
+    // at `bytes` (read and written a component at a time: the state is an array of double),
     // added to the total as kept; the arrays' pointers hoisted, as the state could alias them.
-    const auto advance = [&]<typename Sum>(std::size_t i, Sum* sum) {
+    const auto advance = [&]<typename Sum>(std::size_t i, unsigned char* bytes) {
         double newWeight = newerWeight[i], spectrum = 1.0;
         if (!regular) {
             const double theta = layout_.tail.timescale[i];
@@ -385,23 +386,19 @@ Vec3 WindowTailHistory::beginStep(double stepLength) {
                                 .newer;
         }
         for (std::size_t c = 0; c < 3; ++c) {
-            sum[c] = static_cast<Sum>(
-                decay[i] * sum[c] + spectrum * (newWeight * newer[c] + olderWeight[i] * older[c]));
-            total[c] += sum[c];
+            Sum sum;
+            std::memcpy(&sum, bytes + c * sizeof(Sum), sizeof(Sum));
+            sum = static_cast<Sum>(decay[i] * sum +
+                                   spectrum * (newWeight * newer[c] + olderWeight[i] * older[c]));
+            std::memcpy(bytes + c * sizeof(Sum), &sum, sizeof(Sum));
+            total[c] += sum;
         }
     };
     const std::size_t doubleTerms = layout_.doubleTerms();
-    for (std::size_t i = 0; i < doubleTerms; ++i) advance(i, doubleTail() + 3 * i);
-    // The single sums through a local copy, a chunk at a time (the state is an array of double).
-    constexpr std::size_t chunk = 16;
-    std::array<float, 3 * chunk> singles;
-    for (std::size_t first = doubleTerms; first < layout_.tail.size(); first += chunk) {
-        const std::size_t count = std::min(chunk, layout_.tail.size() - first);
-        unsigned char* bytes = singleTail() + 3 * sizeof(float) * (first - doubleTerms);
-        std::memcpy(singles.data(), bytes, 3 * sizeof(float) * count);
-        for (std::size_t k = 0; k < count; ++k) advance(first + k, singles.data() + 3 * k);
-        std::memcpy(bytes, singles.data(), 3 * sizeof(float) * count);
-    }
+    for (std::size_t i = 0; i < doubleTerms; ++i)
+        advance.operator()<double>(i, reinterpret_cast<unsigned char*>(doubleTail() + 3 * i));
+    for (std::size_t i = doubleTerms; i < layout_.tail.size(); ++i)
+        advance.operator()<float>(i, singleTail() + 3 * sizeof(float) * (i - doubleTerms));
     known = Vec3(total[0], total[1], total[2]);
     return known;
 }
