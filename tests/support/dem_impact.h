@@ -92,6 +92,7 @@ inline ImpactRecord runImpact(ImpactScene& scene, double dt, long maxSteps = 10'
         if (previousOverlap > 0 && load.overlap <= 0) {
             record.contactEnd = crossing;
             record.steps = n;
+            kick(scene, load, 0.5 * dt); // the next step's half kick: the rest of a parting load
             return record;
         }
         previousOverlap = load.overlap;

@@ -196,22 +196,26 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
         settings_.conduction.model != ContactConduction::none && !cloud.temperature.empty();
     long begun = 0;
     const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
-    std::vector<std::vector<std::uint32_t>> touchingPerThread(1);
+    std::vector<std::vector<std::uint32_t>> loadedPerThread(1);
 #pragma omp parallel reduction(+ : begun) if (entryCount >= minimumParallelBatch)
     {
 #ifdef _OPENMP
 #pragma omp single
-        touchingPerThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
-        auto& touchingHere = touchingPerThread[static_cast<std::size_t>(omp_get_thread_num())];
+        loadedPerThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        auto& loadedHere = loadedPerThread[static_cast<std::size_t>(omp_get_thread_num())];
 #else
-        auto& touchingHere = touchingPerThread[0];
+        auto& loadedHere = loadedPerThread[0];
 #endif
         // Static blocks in thread order: joined, the threads' lists ascend.
 #pragma omp for schedule(static)
         for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
             Entry& entry = entries_[e];
-            if (apart(entry)) {
-                if (entry.touching) entry = {entry.first, entry.second, {}, false};
+            // A contact that parted in this step takes the load of its parting once, if its law
+            // has one (partingNormalForce); the pair functions reset its spring.
+            const bool mayPart = entry.touching && mayPull(law_);
+            if (apart(entry) && !mayPart) {
+                if (entry.touching || entry.parting)
+                    entry = {entry.first, entry.second, {}, false, false};
                 continue;
             }
             ContactLoad& load = loads_[e];
@@ -239,13 +243,14 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                 }
             }
             entry.touching = touching;
-            if (touching) touchingHere.push_back(static_cast<std::uint32_t>(e));
+            entry.parting = !touching && mayPart;
+            if (touching || entry.parting) loadedHere.push_back(static_cast<std::uint32_t>(e));
         }
     }
     collisions_ += begun;
-    touchingEntries_.clear();
-    for (const auto& touching : touchingPerThread)
-        touchingEntries_.insert(touchingEntries_.end(), touching.begin(), touching.end());
+    loadedEntries_.clear();
+    for (const auto& loaded : loadedPerThread)
+        loadedEntries_.insert(loadedEntries_.end(), loaded.begin(), loaded.end());
     collectLoaded(cloud);
 
     // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
@@ -259,7 +264,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
         double heat = 0; // [K]
         for (std::uint32_t slot = entryStart_[i]; slot < entryStart_[i + 1]; ++slot) {
             const Entry& entry = entries_[entryOf_[slot] / 2];
-            if (!entry.touching) continue;
+            if (!entry.touching && !entry.parting) continue;
             const ContactLoad& load = loads_[entryOf_[slot] / 2];
             const bool second = entryOf_[slot] % 2 == 1;
             force += second ? Vec3(-load.force) : load.force;
@@ -294,9 +299,9 @@ void SoftSphereCollisions::collectLoaded(ParticleCloud& cloud) {
         std::fill(cloud.contactForce.begin(), cloud.contactForce.end(), Vec3::Zero());
         std::fill(cloud.contactTorque.begin(), cloud.contactTorque.end(), Vec3::Zero());
     }
-    // The touching entries' bodies, ascending and each once.
+    // The loaded entries' bodies, ascending and each once.
     isLoaded_.assign(cloud.size(), 0);
-    for (const std::uint32_t e : touchingEntries_) {
+    for (const std::uint32_t e : loadedEntries_) {
         isLoaded_[entries_[e].first] = 1;
         if (entries_[e].second >= 0) isLoaded_[static_cast<std::size_t>(entries_[e].second)] = 1;
     }

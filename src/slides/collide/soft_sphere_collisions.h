@@ -10,12 +10,13 @@
 //    when the cloud changed (injection, removal) or a particle moved more than s/2 since the
 //    last build, so no pair left out can touch. Each entry carries its contact's tangential
 //    spring, handed over to the rebuilt list by the particles' ids.
-// 2. Loads of the touching entries, in parallel (a squared distance tells the apart ones before
-//    any root is taken); then each particle in contact sums its entries' loads in the order of
-//    its partners' ids. The sum is thus the same for any thread count and any rebuild history,
-//    and a pair's equal and opposite forces conserve momentum to round-off. Only particles in
-//    contact carry a load, so the half kicks visit only those while the cloud keeps them at
-//    their indices (all particles otherwise, skipping zero loads alike).
+// 2. Loads of the touching entries, and of those that parted in this step under a law that may
+//    pull (the dashpot's pull up to the parting, once: partingNormalForce), in parallel (a squared
+//    distance tells the apart ones before any root is taken); then each particle in contact sums
+//    its entries' loads in the order of its partners' ids. The sum is thus the same for any thread
+//    count and any rebuild history, and a pair's equal and opposite forces conserve momentum to
+//    round-off. Only particles in contact carry a load, so the half kicks visit only those while
+//    the cloud keeps them at their indices (all particles otherwise, skipping zero loads alike).
 // With temperatures tracked (physics.heatTransfer, collisions.heating), each contact's dissipated
 // power (ContactLoad::dissipatedPower) over the step heats its particles alike (Eq. 2.117); with
 // collisions.conduction, touching particles exchange heat through the gap (Eq. 2.118,
@@ -90,6 +91,7 @@ private:
         std::int32_t second = 0; ///< cloud index, or −1 − surface for a wall
         TangentialSpring spring;
         bool touching = false;
+        bool parting = false; ///< parted in the last updateLoads, with a load (mayPull)
     };
 
     bool listIsStale(const ParticleCloud& cloud) const;
@@ -120,8 +122,8 @@ private:
     CellGrid grid_;
     std::vector<double> slotRadius_; ///< radii in the grid's cell order, scratch of buildList
     std::vector<Entry> entries_;
-    std::vector<ContactLoad> loads_;             ///< per entry, written for the touching ones
-    std::vector<std::uint32_t> touchingEntries_; ///< ascending, scratch of updateLoads
+    std::vector<ContactLoad> loads_; ///< per entry, written for the touching and parting ones
+    std::vector<std::uint32_t> loadedEntries_; ///< touching or parting, ascending (updateLoads)
     /// The particles that the last updateLoads gave a load (ascending cloud indices), with
     /// their ids: every other particle's load is zero, so the kicks visit only these while
     /// the cloud keeps them where they were (kickedByList).

@@ -32,6 +32,21 @@ ContactLoad contactLoad(const ContactPair& pair, const SoftContactLaw& law, doub
             (normalForce - elasticForce) * closingSpeed + tangentialPower};
 }
 
+/// Load in the step where a contact with unit normal n parted (δ ≤ 0): the dashpot's pull up to
+/// the parting (partingNormalForce), or nothing if the contact was not touching at the last load
+/// (its spring's δ_max is 0). The spring is reset.
+ContactLoad partingLoad(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                        const Vec3& normal, const Vec3& relativeVelocity, TangentialSpring& spring,
+                        double dt) {
+    const bool parted = spring.largestOverlap > 0;
+    spring = {};
+    if (!parted) return {overlap};
+    const double closingSpeed = -relativeVelocity.dot(normal);
+    const double normalForce = partingNormalForce(pair, law, overlap, closingSpeed, dt);
+    // The work of the pull, all of it dissipated.
+    return {overlap, normalForce * normal, Vec3::Zero(), Vec3::Zero(), normalForce * closingSpeed};
+}
+
 } // namespace
 
 ContactLoad sphereSphereLoad(const ContactPair& pair, const SoftContactLaw& law,
@@ -40,10 +55,9 @@ ContactLoad sphereSphereLoad(const ContactPair& pair, const SoftContactLaw& law,
     const Vec3 separation = a.position - b.position;
     const double distance = separation.norm();
     const double overlap = a.radius + b.radius - distance;
-    if (overlap <= 0) {
-        spring = {};
-        return {overlap};
-    }
+    if (overlap <= 0)
+        return partingLoad(pair, law, overlap, separation / distance, a.velocity - b.velocity,
+                           spring, dt);
     // The plane of the overlap lens: lever arms that add up to the centre distance.
     const double leverA =
         (distance * distance + a.radius * a.radius - b.radius * b.radius) / (2.0 * distance);
@@ -56,10 +70,8 @@ ContactLoad sphereWallLoad(const ContactPair& pair, const SoftContactLaw& law,
                            const Vec3& wallNormal, TangentialSpring& spring, double dt) {
     const double distance = (sphere.position - wallPoint).dot(wallNormal);
     const double overlap = sphere.radius - distance;
-    if (overlap <= 0) {
-        spring = {};
-        return {overlap};
-    }
+    if (overlap <= 0)
+        return partingLoad(pair, law, overlap, wallNormal, sphere.velocity, spring, dt);
     return contactLoad(pair, law, overlap, wallNormal, distance, 0.0, sphere, Vec3::Zero(),
                        Vec3::Zero(), spring, dt);
 }

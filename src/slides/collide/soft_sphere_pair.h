@@ -36,12 +36,14 @@ struct ContactLoad {
 };
 
 /// Load of sphere a on sphere b (force on a). The spring is that pair's; it is reset when the
-/// spheres separate.
+/// spheres separate. In the step where they part (apart now, the spring's δ_max > 0 from the
+/// last load), the load is the dashpot's pull up to the parting (partingNormalForce).
 ContactLoad sphereSphereLoad(const ContactPair& pair, const SoftContactLaw& law,
                              const ContactSphere& a, const ContactSphere& b,
                              TangentialSpring& spring, double dt);
 
-/// Load of a resting plane wall (point p, unit normal n into the gas) on the sphere.
+/// Load of a resting plane wall (point p, unit normal n into the gas) on the sphere; the spring
+/// as in sphereSphereLoad.
 ContactLoad sphereWallLoad(const ContactPair& pair, const SoftContactLaw& law,
                            const ContactSphere& sphere, const Vec3& wallPoint,
                            const Vec3& wallNormal, TangentialSpring& spring, double dt);

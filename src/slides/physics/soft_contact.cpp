@@ -135,8 +135,15 @@ double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, do
         }
         force = (elastic + impulse / dt) / (1 + 0.5 * dt * damping / pair.mass);
     }
-    // Only the linear spring–dashpot may pull (its closed form is the free damped oscillator's).
-    return law.normalLaw == NormalContactLaw::linearSpringDashpot ? force : std::max(0.0, force);
+    return mayPull(law) ? force : std::max(0.0, force);
+}
+
+double partingNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                          double closingSpeed, double dt) {
+    if (!mayPull(law) || !(dt > 0)) return 0;
+    // The last step's kicks applied the dashpot up to δ(t − dt/2), half a drift back from this
+    // step's δ ≤ 0; from there to the parting (δ = 0) its impulse is Φ(0) − Φ(δ(t − dt/2)).
+    return -dampingPotential(pair, law, overlap - 0.5 * closingSpeed * dt) / dt;
 }
 
 double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap) {

@@ -13,7 +13,9 @@
 //   F_n = k_n δ + γ_n dδ/dt (clamped at 0: never attractive), F_t = −k_t ξ − γ_t v_t, |F_t| ≤ μF_n.
 // A velocity Verlet step applies the damping γ dδ/dt as the difference of its potential
 // Φ(δ) = ∫₀^δ γ over the window of its kicks, from the touch in a contact's first step
-// (normalContactForce): second order in dt, where sampling γ at the half-step velocity is first.
+// (normalContactForce) and, for a force that may pull, to the parting in the step where the
+// bodies come apart (partingNormalForce): second order in dt, where sampling γ at the half-step
+// velocity is first.
 // Eq. 2.5 as extracted reads K_t = (1/(8r_c))((2−ν1)/G1 + (2−ν2)/G2); Mindlin's stiffness is
 // the inverse, K_t = 8 r_c G* with contact radius r_c = √(R*δ), as used here.
 // The other normal laws of Eq. 2.6–2.10 (physics/contact_laws.h) and the regularised friction of
@@ -87,6 +89,22 @@ double hertzNormalForce(const ContactPair& pair, const SoftContactLaw& law, doub
 double normalContactForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
                           double closingSpeed, double dt, double& largestOverlap);
 
+/// Whether the law's force may pull the bodies together: only the linear spring–dashpot's (its
+/// closed form is the free damped oscillator's, whose last instants pull); the others are
+/// clamped at 0.
+inline bool mayPull(const SoftContactLaw& law) {
+    return law.normalLaw == NormalContactLaw::linearSpringDashpot;
+}
+
+/// Normal force [N] that a step of length dt applies in the step where a contact parted (δ ≤ 0
+/// now, > 0 at the last step), closing at dδ/dt: the dashpot's impulse from where the last
+/// step's window ended (half a drift back) to the parting, Φ(0) − Φ(δ(t − dt/2)), over dt — the
+/// window that normalContactForce's first step takes from the touch, at the other end. A force
+/// clamped at 0 has ended before the parting (its dashpot outweighs the spring as δ → 0): 0
+/// unless the law mayPull.
+double partingNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap,
+                          double closingSpeed, double dt);
+
 /// The conservative part of the law's normal force at overlap δ [N] (the loading curve of
 /// Walton–Braun): what the force less it does is dissipated.
 double elasticNormalForce(const ContactPair& pair, const SoftContactLaw& law, double overlap);
@@ -103,7 +121,9 @@ double hertzElasticEnergy(const ContactPair& pair, double overlap);
 /// Lives as long as the contact; a new contact starts from zero.
 struct TangentialSpring {
     Vec3 displacement = Vec3::Zero(); ///< ξ [m], in the tangent plane
-    double largestOverlap = 0;        ///< δ_max of the contact so far [m] (waltonBraun)
+    /// δ_max of the contact so far [m] (waltonBraun); > 0 tells the step where the contact parts
+    /// that it was touching.
+    double largestOverlap = 0;
 };
 
 /// Mindlin's tangential stiffness k_t = S_t = 8 G* √(R* δ) [N/m] (Eq. 2.5, inverted).
