@@ -13,6 +13,7 @@
 // its start's gas for the step (still gas outside the mesh stopped a third of them for good).
 #include "../support/case_runs.h"
 #include "../support/kolmogorov_smirnov.h"
+#include "../support/overlaps.h"
 #include "../support/test_scenes.h"
 #include "slides/config/scene_reader.h"
 #include "slides/integrate/injector.h"
@@ -33,9 +34,9 @@ namespace {
 namespace fs = std::filesystem;
 
 /// A case on mesh tests/foam/data/<mesh> in a uniform stream U = velocity (its patches'
-/// conditions `boundaryField`) with one injector `inlet`, a target plane at x = targetX.
+/// conditions `boundaryField`) with one injector `inlet`, a target plane far downstream.
 void writeMeshCase(const fs::path& directory, const std::string& mesh, const std::string& velocity,
-                   const std::string& boundaryField, const std::string& injector, double targetX) {
+                   const std::string& boundaryField, const std::string& injector) {
     fs::create_directories(directory / "0");
     fs::copy(fs::path(SLIDES_SOURCE_DIR) / "tests/foam/data" / mesh / "constant",
              directory / "constant", fs::copy_options::recursive);
@@ -53,9 +54,7 @@ void writeMeshCase(const fs::path& directory, const std::string& mesh, const std
         << injector
         << " } }\n"
            "physics { gravity (0 0 0); }\n"
-           "surfaces { target { type plane; point ("
-        << targetX
-        << " 0 0); normal (-1 0 0); } }\n"
+           "surfaces { target { type plane; point (10 0 0); normal (-1 0 0); } }\n"
            "time { dt 1e-3; endTime 0.5; }\n"
            "output { interval 0.1; }\n";
 }
@@ -66,7 +65,7 @@ void writeBoxCase(const fs::path& directory, const std::string& injector) {
                   "    inlet { type fixedValue; value uniform (1 0 0); }\n"
                   "    outlet { type zeroGradient; }\n    walls { type noSlip; }\n"
                   "    sides { type symmetry; }\n",
-                  injector, 10);
+                  injector);
 }
 
 /// The 5° wedge about the x axis (length 0.1 m, radius 0.05 m) in U = (4 0 0) m/s.
@@ -75,7 +74,7 @@ void writeWedgeCase(const fs::path& directory, const std::string& injector) {
                   "    inlet { type fixedValue; value uniform (4 0 0); }\n"
                   "    outlet { type zeroGradient; }\n    outer { type slip; }\n"
                   "    \"(front|back)\" { type wedge; }\n    axis { type empty; }\n",
-                  injector, 10);
+                  injector);
 }
 
 /// The 2-D channel (0.1 × 0.02 m, 2 mm thick between empty patches) in U = (5 0 0) m/s.
@@ -83,7 +82,7 @@ void writeChannelCase(const fs::path& directory, const std::string& injector) {
     writeMeshCase(directory, "channel2d", "(5 0 0)",
                   "    \"(inlet|outlet|walls)\" { type fixedValue; value uniform (5 0 0); }\n"
                   "    frontAndBack { type empty; }\n",
-                  injector, 10);
+                  injector);
 }
 
 struct Injected {
@@ -253,14 +252,7 @@ SteppedInjection injectStepping(const std::string& injector, bool avoidOverlap,
         const std::size_t before = cloud.size();
         source.injectUntil(t + dt, t, *carrier, cloud);
         if (plane) plane->hold(cloud);
-        for (std::size_t i = before; i < cloud.size(); ++i)
-            for (std::size_t j = 0; j < i; ++j) {
-                const double contact = cloud.radius[i] + cloud.radius[j];
-                if ((cloud.position[i] - cloud.position[j]).squaredNorm() < contact * contact) {
-                    ++overlapping;
-                    break;
-                }
-            }
+        overlapping += test::overlappingNewcomers(cloud, before);
         for (std::size_t i = 0; i < cloud.size(); ++i) cloud.position[i] += dt * cloud.velocity[i];
     }
     result.overlappingShare = double(overlapping) / double(cloud.size());

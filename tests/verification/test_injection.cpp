@@ -10,6 +10,7 @@
 #include "../support/case_runs.h"
 #include "../support/dem_impact.h"
 #include "../support/kolmogorov_smirnov.h"
+#include "../support/overlaps.h"
 #include "../support/test_scenes.h"
 #include "slides/config/dictionary.h"
 #include "slides/config/scene_reader.h"
@@ -527,14 +528,7 @@ double overlappingShare(bool avoidOverlap) {
     for (double t = 0; !injectors.finished(); t += dt) {
         const std::size_t before = cloud.size();
         injectors.injectUntil(t + dt, t, *carrier, cloud);
-        for (std::size_t i = before; i < cloud.size(); ++i)
-            for (std::size_t j = 0; j < i; ++j) {
-                const double contact = cloud.radius[i] + cloud.radius[j];
-                if ((cloud.position[i] - cloud.position[j]).squaredNorm() < contact * contact) {
-                    ++overlapping;
-                    break;
-                }
-            }
+        overlapping += test::overlappingNewcomers(cloud, before);
         for (std::size_t i = 0; i < cloud.size(); ++i) cloud.position[i] += dt * cloud.velocity[i];
     }
     return double(overlapping) / double(cloud.size());
