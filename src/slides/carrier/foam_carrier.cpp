@@ -1,6 +1,7 @@
 #include "slides/carrier/foam_carrier.h"
 
 #include "slides/carrier/foam_file.h"
+#include "slides/carrier/gas_records.h"
 #include "slides/core/error.h"
 #include "slides/core/name_table.h"
 #include "slides/core/parallel.h"
@@ -56,40 +57,6 @@ std::optional<WedgeFrame> findWedge(const FoamMesh& mesh, const std::string& fil
     return frame;
 }
 
-/// U and the scalars present as one field of records; a patch gets face values where any field
-/// has them, the others' taken from the owner cell there, as PointWeights treats a patch without
-/// values (carrier/foam_interpolation.h).
-FoamVolField<GasValues>
-gasRecords(const FoamVolField<Vec3>& velocity,
-           const std::array<std::optional<FoamVolField<double>>, 3>& scalars,
-           const FoamMesh& mesh) {
-    FoamVolField<GasValues> gas;
-    gas.file = velocity.file;
-    gas.cells.resize(velocity.cells.size());
-    for (std::size_t c = 0; c < gas.cells.size(); ++c) {
-        gas.cells[c].velocity = velocity.cells[c];
-        for (int s = 0; s < 3; ++s)
-            if (scalars[s]) gas.cells[c].scalars[s] = scalars[s]->cells[c];
-    }
-    gas.patchValues.resize(mesh.patches.size());
-    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
-        const auto given = [&](const auto& field) { return !field.patchValues[p].empty(); };
-        bool any = given(velocity);
-        for (const auto& scalar : scalars) any = any || (scalar && given(*scalar));
-        if (!any) continue;
-        const int start = mesh.patches[p].start;
-        for (int f = 0; f < mesh.patches[p].size; ++f) {
-            GasValues face = gas.cells[mesh.owner[start + f]];
-            if (given(velocity)) face.velocity = velocity.patchValues[p][f];
-            for (int s = 0; s < 3; ++s)
-                if (scalars[s] && given(*scalars[s]))
-                    face.scalars[s] = scalars[s]->patchValues[p][f];
-            gas.patchValues[p].push_back(face);
-        }
-    }
-    return gas;
-}
-
 } // namespace
 
 Vec3 WedgeFrame::toWedge(const Vec3& x, Mat3& rotation) const {
@@ -136,18 +103,9 @@ FoamCarrier::FoamCarrier(const std::filesystem::path& caseDirectory, FoamCarrier
         timeDirectory_ = series_->firstDirectory();
         return;
     }
-    // U, then k, ε and T where present (each within its physical bound), as one record per
-    // cell, face and point (carrier/gas_values.h).
-    auto velocity = readFoamVolField<Vec3>(timeDirectory_, "U", mesh_);
-    std::array<std::optional<FoamVolField<double>>, 3> scalars;
-    const std::array<const char*, 3> scalarNames{"k", "epsilon", "T"};
-    for (int s = 0; s < 3; ++s) {
-        if (!FoamFile::exists(timeDirectory_ / scalarNames[s])) continue;
-        scalars[s] = readFoamVolField<double>(timeDirectory_, scalarNames[s], mesh_);
-        requireAtLeast(*scalars[s], 0, s < 2, scalarNames[s]);
-        hasScalar_[s] = true;
-    }
-    auto gas = gasRecords(velocity, scalars, mesh_);
+    // U, then k, ε and T where present, as one record per cell, face and point.
+    hasScalar_ = gasScalarsIn(timeDirectory_);
+    auto gas = readGasRecords(timeDirectory_, mesh_, hasScalar_);
     gas_ = std::make_unique<InterpolableField<GasValues>>(gas, mesh_, PointWeights(mesh_));
     if (part) gasRead_ = std::move(gas);
     if (settings_.interpolation == FoamInterpolation::cell)
@@ -278,28 +236,31 @@ void FoamCarrier::missing(const std::string& field) const {
 void FoamCarrier::sampleLevelsAt(const TetLocation& at, const Vec3& x, const Mat3& rotation,
                                  const LevelCache<FoamLevel>::Pair& levels, CarrierNeeds needs,
                                  CarrierSample& out, std::size_t i) const {
-    const FoamLevel &before = *levels.before, &after = *levels.after;
+    // The tetrahedron's vertex records of both levels, linear in time, then linear in space: one
+    // pass gives U, ∇U, k, ε and T at t, and ∂U/∂t as the levels' difference over the interval.
+    const auto before = levels.before->vertexValues(at), after = levels.after->vertexValues(at);
     const double weight = levels.bracket.weight;
-    const Vec3 u0 = before.velocity->value(mesh_, at), u1 = after.velocity->value(mesh_, at);
-    const Vec3 velocity = (1 - weight) * u0 + weight * u1;
-    out.velocity[i] = rotation * velocity;
+    std::array<Vec3, 4> velocities;
+    GasValues here;
+    Vec3 change = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) {
+        const GasValues now = (1 - weight) * before[k] + weight * after[k];
+        velocities[k] = now.velocity;
+        here += at.weights[k] * now;
+        change += at.weights[k] * (after[k].velocity - before[k].velocity);
+    }
+    out.velocity[i] = rotation * here.velocity;
     if (needs.timeDerivative)
-        out.velocityTimeDerivative[i] = rotation * ((u1 - u0) / levels.bracket.interval);
-    if (needs.velocityGradient) {
-        const Mat3 gradient = (1 - weight) * tetGradient(mesh_, *locator_, *before.velocity, at) +
-                              weight * tetGradient(mesh_, *locator_, *after.velocity, at);
+        out.velocityTimeDerivative[i] = rotation * (change / levels.bracket.interval);
+    if (needs.velocityGradient)
         out.velocityGradient[i] =
-            rotation * wedgeHoopGradient(gradient, velocity, x) * rotation.transpose();
-    }
-    const auto scalar = [&](int s) {
-        return (1 - weight) * before.scalars[s]->value(mesh_, at) +
-               weight * after.scalars[s]->value(mesh_, at);
-    };
+            rotation * wedgeHoopGradient(tetGradient(*locator_, at, velocities), here.velocity, x) *
+            rotation.transpose();
     if (needs.turbulence) {
-        out.turbulentKineticEnergy[i] = scalar(0);
-        out.dissipationRate[i] = scalar(1);
+        out.turbulentKineticEnergy[i] = here.scalars[0];
+        out.dissipationRate[i] = here.scalars[1];
     }
-    if (needs.temperature) out.temperature[i] = scalar(2);
+    if (needs.temperature) out.temperature[i] = here.scalars[2];
 }
 
 Vec3 FoamCarrier::meshPoint(const Vec3& point, Mat3& rotation) const {

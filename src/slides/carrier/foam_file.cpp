@@ -45,9 +45,10 @@ std::string readCompressed(const std::filesystem::path& path, std::size_t maxByt
     return text;
 }
 
-bool isDelimiter(char c) {
-    return std::isspace(static_cast<unsigned char>(c)) || std::strchr(";(){}[]\"", c) != nullptr;
-}
+/// A blank: what std::isspace accepts in the C locale, without its call per character.
+constexpr bool isBlank(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
+bool isDelimiter(char c) { return isBlank(c) || std::strchr(";(){}[]\"", c) != nullptr; }
 
 } // namespace
 
@@ -110,10 +111,12 @@ void FoamFile::fail(const std::string& message) const {
 void FoamFile::skipBlank() {
     while (position_ < text_.size()) {
         const char c = text_[position_];
-        const char next = position_ + 1 < text_.size() ? text_[position_ + 1] : '\0';
-        if (std::isspace(static_cast<unsigned char>(c))) {
+        if (isBlank(c)) {
             ++position_;
-        } else if (c == '/' && next == '/') {
+            continue;
+        }
+        const char next = position_ + 1 < text_.size() ? text_[position_ + 1] : '\0';
+        if (c == '/' && next == '/') {
             position_ = text_.find('\n', position_);
             if (position_ == std::string::npos) position_ = text_.size();
         } else if (c == '/' && next == '*') {

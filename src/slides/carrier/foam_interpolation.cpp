@@ -158,15 +158,22 @@ template struct InterpolableField<GasValues>;
 template <typename T>
 Mat3 tetGradient(const FoamMesh& mesh, const FoamLocator& locator,
                  const InterpolableField<T>& velocity, const TetLocation& at) {
-    const auto tet = locator.vertices(at.cell, at.face, at.edge);
     const auto ring = mesh.pointsOf(at.face);
     const int n = static_cast<int>(ring.size());
-    const Vec3 u0 = velocityOf(velocity.cells[at.cell]);
+    return tetGradient(locator, at,
+                       {velocityOf(velocity.cells[at.cell]),
+                        velocityOf(velocity.faceMidpoints[at.face]),
+                        velocityOf(velocity.points[ring[at.edge]]),
+                        velocityOf(velocity.points[ring[(at.edge + 1) % n]])});
+}
+
+Mat3 tetGradient(const FoamLocator& locator, const TetLocation& at,
+                 const std::array<Vec3, 4>& vertexVelocities) {
+    const auto tet = locator.vertices(at.cell, at.face, at.edge);
+    const Vec3& u0 = vertexVelocities[0];
     Mat3 edges, differences;
     edges << tet[1] - tet[0], tet[2] - tet[0], tet[3] - tet[0];
-    differences << velocityOf(velocity.faceMidpoints[at.face]) - u0,
-        velocityOf(velocity.points[ring[at.edge]]) - u0,
-        velocityOf(velocity.points[ring[(at.edge + 1) % n]]) - u0;
+    differences << vertexVelocities[1] - u0, vertexVelocities[2] - u0, vertexVelocities[3] - u0;
     // U(x) − U0 = G (x − x0) for each edge: G E = ΔU.
     return differences * edges.inverse();
 }

@@ -77,6 +77,11 @@ template <typename T> struct InterpolableField {
     void refreshFaceMidpoints(const FoamMesh& mesh);
     /// The cellPoint value at a located point.
     T value(const FoamMesh& mesh, const TetLocation& at) const;
+    /// The values at the four vertices of a located point's tetrahedron, in the order of
+    /// at.weights: cell centre, face midpoint, the edge's two points.
+    std::array<T, 4> vertexValues(const TetLocation& at) const {
+        return {cells[at.cell], faceMidpoints[at.face], points[at.points[0]], points[at.points[1]]};
+    }
 };
 
 /// The constant gradient of U in tetrahedron at (cellPoint): gradient(i, j) = dU_i/dx_j; T is
@@ -84,6 +89,11 @@ template <typename T> struct InterpolableField {
 template <typename T>
 Mat3 tetGradient(const FoamMesh& mesh, const FoamLocator& locator,
                  const InterpolableField<T>& velocity, const TetLocation& at);
+
+/// The constant gradient of U over tetrahedron at from U at its vertices (in the order of
+/// InterpolableField::vertexValues).
+Mat3 tetGradient(const FoamLocator& locator, const TetLocation& at,
+                 const std::array<Vec3, 4>& vertexVelocities);
 
 /// The gradient of each cell for the cell scheme: volume average of its tetrahedra's gradients.
 template <typename T>

@@ -1,7 +1,7 @@
 #include "slides/carrier/foam_series.h"
 
-#include "slides/carrier/foam_field.h"
 #include "slides/carrier/foam_file.h"
+#include "slides/carrier/gas_records.h"
 #include "slides/core/error.h"
 
 #include <algorithm>
@@ -43,8 +43,7 @@ FoamSeries::FoamSeries(const std::filesystem::path& caseDirectory,
         throw InputError(caseDirectory.string(), 0, timesKey,
                          "a time series needs at least two time directories in the range, found " +
                              std::to_string(found.size()));
-    for (int s = 0; s < 3; ++s)
-        hasScalar_[s] = FoamFile::exists(found.front().second / scalarNames[s]);
+    hasScalar_ = gasScalarsIn(found.front().second);
     std::vector<double> offsets;
     for (const auto& [time, directory] : found) {
         if (std::filesystem::exists(directory / "polyMesh"))
@@ -55,9 +54,9 @@ FoamSeries::FoamSeries(const std::filesystem::path& caseDirectory,
             throw InputError((directory / "U").string(), 0, timesKey,
                              "missing field U in a time directory of the series");
         for (int s = 0; s < 3; ++s)
-            if (hasScalar_[s] && !FoamFile::exists(directory / scalarNames[s]))
-                throw InputError((directory / scalarNames[s]).string(), 0, timesKey,
-                                 std::string("missing field ") + scalarNames[s] + ", which " +
+            if (hasScalar_[s] && !FoamFile::exists(directory / gasScalarNames[s]))
+                throw InputError((directory / gasScalarNames[s]).string(), 0, timesKey,
+                                 std::string("missing field ") + gasScalarNames[s] + ", which " +
                                      found.front().second.filename().string() + " has");
         offsets.push_back(time - found.front().first);
         directories_.push_back(directory);
@@ -66,23 +65,15 @@ FoamSeries::FoamSeries(const std::filesystem::path& caseDirectory,
         throw InputError(caseDirectory.string(), 0, "carrier.foamFieldCoeffs.cycle",
                          "the period must exceed the first write interval " +
                              std::to_string(offsets[1]) + " s");
-    cache_ =
-        std::make_unique<LevelCache<FoamLevel>>(TimeLevels(std::move(offsets), settings.cycle),
-                                                [this](std::size_t index) { return read(index); });
+    cache_ = std::make_unique<LevelCache<FoamLevel>>(
+        TimeLevels(std::move(offsets), settings.cycle),
+        [this](std::size_t index) { return read(index); }, settings.readAhead);
     cache_->hold(0, 0);
 }
 
 std::shared_ptr<const FoamLevel> FoamSeries::read(std::size_t index) const {
-    const std::filesystem::path& directory = directories_[index];
-    auto level = std::make_shared<FoamLevel>();
-    level->velocity.emplace(readFoamVolField<Vec3>(directory, "U", mesh_), mesh_, weights_);
-    for (int s = 0; s < 3; ++s) { // k, ε ≥ 0, T > 0, as a frozen carrier's
-        if (!hasScalar_[s]) continue;
-        const auto field = readFoamVolField<double>(directory, scalarNames[s], mesh_);
-        requireAtLeast(field, 0, s < 2, scalarNames[s]);
-        level->scalars[s].emplace(field, mesh_, weights_);
-    }
-    return level;
+    return std::make_shared<const FoamLevel>(readGasRecords(directories_[index], mesh_, hasScalar_),
+                                             mesh_, weights_);
 }
 
 void FoamSeries::hold(double start, double end) {

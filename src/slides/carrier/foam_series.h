@@ -29,19 +29,15 @@ namespace slides {
 struct FoamSeriesSettings {
     std::optional<std::pair<double, double>> range; ///< written times start…end; all when empty
     std::optional<double> cycle;                    ///< period of a periodic replay [s]
+    bool readAhead = true; ///< read the next level on a background thread while particles move
 };
 
-/// One written time: U, and k, ε and T where the series has them.
-struct FoamLevel {
-    std::optional<InterpolableField<Vec3>> velocity;
-    std::array<std::optional<InterpolableField<double>>, 3> scalars; ///< k, ε, T
-};
+/// One written time: U, and k, ε and T where the series has them, as records (carrier/
+/// gas_records.h).
+using FoamLevel = InterpolableField<GasValues>;
 
 class FoamSeries {
 public:
-    /// The names of the optional scalars, in the order of FoamLevel::scalars.
-    static constexpr std::array<const char*, 3> scalarNames{"k", "epsilon", "T"};
-
     FoamSeries(const std::filesystem::path& caseDirectory, const FoamSeriesSettings& settings,
                const FoamMesh& mesh);
 
@@ -51,6 +47,7 @@ public:
     /// The levels around run time t and their weights.
     LevelCache<FoamLevel>::Pair at(double time);
 
+    /// Whether the levels hold k, ε or T (in the order of GasValues::scalars).
     bool has(std::size_t scalar) const { return hasScalar_[scalar]; }
     const std::filesystem::path& firstDirectory() const { return directories_.front(); }
     std::size_t levelCount() const { return directories_.size(); }

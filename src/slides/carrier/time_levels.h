@@ -62,8 +62,9 @@ template <typename Level> class LevelCache {
 public:
     using Reader = std::function<std::shared_ptr<const Level>(std::size_t index)>;
 
-    LevelCache(TimeLevels levels, Reader read)
-        : levels_(std::move(levels)), read_(std::move(read)) {}
+    /// readAhead: read the level following the held ones on a background thread.
+    LevelCache(TimeLevels levels, Reader read, bool readAhead = true)
+        : levels_(std::move(levels)), read_(std::move(read)), readAhead_(readAhead) {}
     ~LevelCache() {
         if (ahead_.valid()) ahead_.wait();
     }
@@ -81,7 +82,8 @@ public:
         const auto following = levels_.next(wanted.back());
         if (ahead_.valid() && (!following || aheadIndex_ != *following))
             ahead_.get(); // read for another interval (a jump back in time): dropped
-        if (!ahead_.valid() && following && !held_.contains(*following) && held_.size() < 3) {
+        if (readAhead_ && !ahead_.valid() && following && !held_.contains(*following) &&
+            held_.size() < 3) {
             aheadIndex_ = *following;
             ahead_ = std::async(std::launch::async, read_, *following);
         }
@@ -122,6 +124,7 @@ private:
 
     TimeLevels levels_;
     Reader read_;
+    bool readAhead_;
     mutable std::mutex mutex_;
     std::map<std::size_t, std::shared_ptr<const Level>> held_;
     std::future<std::shared_ptr<const Level>> ahead_;

@@ -116,6 +116,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
                                                        carrier.foamSeries->range->second})
                               : nlohmann::json("all");
         if (carrier.foamSeries->cycle) series["cycle"] = *carrier.foamSeries->cycle;
+        series["readAhead"] = carrier.foamSeries->readAhead;
     }
     const RadiusDistribution& radius = scene.particles.radius;
     settings["particles"] = {

@@ -122,6 +122,9 @@ std::vector<KeyDeclaration> declareKeys() {
         {"carrier.foamFieldCoeffs.cycle", K::scalar, "s", "-", {}, R::positive,
          "Period of a periodic series: run time t reads the series at t mod cycle, the first "
          "level following the last."},
+        {"carrier.foamFieldCoeffs.readAhead", K::boolean, "-", "yes", {}, R::any,
+         "Read the next level of a series on a background thread while the particles move "
+         "(three levels held); no: read it when the run reaches it (two held)."},
         {"carrier.turbulence", K::dictionary, "-", "-", {}, R::any,
          "Turbulence of the analytic jets, k = 3/2 (I U)², ε = 0.09^(3/4) k^(3/2)/ℓ "
          "(carrier/jet_scalars.h); without it they are laminar (k = ε = 0)."},

@@ -941,9 +941,12 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
         carrier.latticeSpacing = keys.scalar(coeffs + ".latticeSpacing");
         if (keys.has(coeffs + ".times"))
             carrier.foamSeries = FoamSeriesSettings{keys.timeRange(coeffs + ".times"),
-                                                    keys.optionalScalar(coeffs + ".cycle")};
-        else if (keys.has(coeffs + ".cycle"))
-            keys.fail(coeffs + ".cycle", "a cycle replays a time series: give times too");
+                                                    keys.optionalScalar(coeffs + ".cycle"),
+                                                    keys.boolean(coeffs + ".readAhead")};
+        else
+            for (const char* key : {".cycle", ".readAhead"})
+                if (keys.has(coeffs + key))
+                    keys.fail(coeffs + key, "it concerns a time series: give times too");
         return carrier;
     }
     carrier.viscosity = fluid.kinematicViscosity;
