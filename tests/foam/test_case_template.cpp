@@ -183,7 +183,8 @@ TEST_P(CaseTemplateWithoutMesh, IsTheAnalyticJetAndRunsAsWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedCases, CaseTemplateWithoutMesh,
-                         ::testing::Values("analyticSpray", "erosiveJet", "sprayDeposition"));
+                         ::testing::Values("analyticSpray", "erosiveJet", "pulsedJet",
+                                           "sprayDeposition"));
 
 TEST(CaseTemplate, AnalyticJetCarriesEveryParticleToThePlate) {
     // The whole run as written: the 10 µm particles (Stokes time 2.4 ms, 25 m/s jet) follow

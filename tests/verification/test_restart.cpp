@@ -2,7 +2,8 @@
 // Checkpoint and restart (io/checkpoint.h) through the command line: a run killed with SIGKILL
 // in the middle (checkpoints every few steps, so the kill often lands inside a write) restarts
 // from its last checkpoint and ends with files identical byte for byte to an uninterrupted
-// run's (frames, series, HDF5 data, summary apart from its timings), at another thread count;
+// run's (frames, series, HDF5 data, summary apart from its timings), at another thread count,
+// also in the pulsed jet (an unsteady carrier, carrier/pulsed_jet.h);
 // a damaged, truncated or mismatched checkpoint (other dictionary, time step or version) is
 // refused with exit status 2 and a message naming it, and the existing output is left alone.
 #include "../support/case_runs.h"
@@ -37,6 +38,7 @@ enum class ExtraPhysics {
     collisionsAndDeposit, ///< spins, the deposit (rebuilt from the arrivals), contact counts
     softSpheres,          ///< contact loads and the springs of touching contacts
     electromagnetic,      ///< the particles' charges (Lorentz force, Eq. 2.93)
+    pulsedJet, ///< an unsteady carrier (carrier/pulsed_jet.h): ∂U/∂t, the run's time in the gas
 };
 
 /// Inserts entry after the first occurrence of anchor in text.
@@ -98,6 +100,11 @@ void copyDefaultCase(const ScratchDirectory& scratch, ExtraPhysics physics = Ext
         const auto end = text.find("endTime         0.1;");
         ASSERT_NE(end, std::string::npos);
         text.replace(end, 20, "endTime         0.015;");
+    }
+    if (physics == ExtraPhysics::pulsedJet) {
+        insertAfter(text, "        effectiveViscosity 1.4e-3;\n",
+                    "        pulsation { amplitude 0.3; frequency 200; }\n");
+        insertAfter(text, "buoyancy    on;", " addedMass on; pressureGradient on;");
     }
     std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
 }
@@ -210,13 +217,15 @@ std::string killMomentName(const testing::TestParamInfo<KillMoment>& info) {
                              "WithDispersionAndHeat",
                              "WithCollisionsAndDeposit",
                              "WithSoftSpheres",
-                             "WithElectromagneticForces"};
+                             "WithElectromagneticForces",
+                             "InAPulsedJet"};
     return std::to_string(info.param.delayMilliseconds) + "ms" +
            physics[static_cast<int>(info.param.physics)];
 }
 
 // Kill moments after the first checkpoint: soon, and well into the run; and with the model
-// states of the unsteady forces, and of dispersion and heating, to carry across.
+// states of the unsteady forces, and of dispersion and heating, to carry across; and in an
+// unsteady carrier, whose gas depends on the run's time.
 INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                          testing::Values(KillMoment{0, ExtraPhysics::none},
                                          KillMoment{150, ExtraPhysics::none},
@@ -225,7 +234,8 @@ INSTANTIATE_TEST_SUITE_P(Moments, KilledRun,
                                          KillMoment{100, ExtraPhysics::dispersionAndHeat},
                                          KillMoment{100, ExtraPhysics::collisionsAndDeposit},
                                          KillMoment{100, ExtraPhysics::softSpheres},
-                                         KillMoment{100, ExtraPhysics::electromagnetic}),
+                                         KillMoment{100, ExtraPhysics::electromagnetic},
+                                         KillMoment{100, ExtraPhysics::pulsedJet}),
                          killMomentName);
 
 /// A short run of the default case (copied to scratch) that leaves a checkpoint.

@@ -242,8 +242,9 @@ void PathEstimator::visitPoint(const PathPoint& point, const PilotStep& step) {
     const double speedSeen = point.velocity.norm();
     const double relaxation = std::sqrt(std::max(1.0, tau / step.time));
     const auto forResponse = [relaxation](double tracerStep) { return relaxation * tracerStep; };
-    flowSteps_.add(
-        forResponse(flowChangePerStep * referenceSpeed_ / (gradient * point.velocity).norm()));
+    // The gas it sees changes at the rate ∂U/∂t + (∇U)v (∂U/∂t = 0 in a steady carrier).
+    flowSteps_.add(forResponse(flowChangePerStep * referenceSpeed_ /
+                               (gradient * point.velocity + point.gasTimeDerivative).norm()));
     crossingSteps_.add(forResponse(0.5 * point.resolutionLength / speedSeen));
     responseTimes_.add(tau);
 

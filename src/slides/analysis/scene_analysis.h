@@ -20,7 +20,8 @@
 // contrasting scenes). Spin follows Magnus lift.
 //
 // Without time.dt the step is the smallest of: the flow limit (for a tracer, the gas velocity
-// it sees changes by at most flowChangePerStep U_ref a step), the cell crossing limit (for a
+// it sees, changing at ∂U/∂t + (∇U)v, changes by at most flowChangePerStep U_ref a step: an
+// unsteady carrier's period is resolved), the cell crossing limit (for a
 // tracer, half a cell of the carrier's resolution length a step) — both relaxed by √(τ/t)
 // at a point reached after a flight t shorter than the response time τ, since the error
 // the step makes in the gas a particle sees has moved its velocity by (t/τ) h² there —, a

@@ -56,6 +56,11 @@ struct BickleyProfile {
         return std::acosh(std::numbers::sqrt2) * std::cbrt(s * s) / C3;
     }
     double virtualOrigin(double U0) const { return std::pow(C1 / U0, 3); } ///< (C1/U0)³ [m]
+    /// ∫_from^to ds/u_c(s) = (3/(4 C1)) (to^(4/3) − from^(4/3)): the time the centreline flow
+    /// takes from s = from to s = to [s].
+    double travelTime(double from, double to) const {
+        return 0.75 * (to * std::cbrt(to) - from * std::cbrt(from)) / C1;
+    }
 };
 
 class AnalyticJet final : public SimilarityJet<BickleyProfile> {

@@ -13,6 +13,7 @@
 #include "slides/carrier/foam_series.h"
 #include "slides/carrier/jet_frame.h"
 #include "slides/carrier/jet_scalars.h"
+#include "slides/carrier/pulsed_jet.h"
 
 #include <array>
 #include <optional>
@@ -87,6 +88,8 @@ struct CarrierSettings {
     double viscosity = 0; ///< ν that sets the spreading: effectiveViscosity or the fluid's
     std::optional<double> C1, C2, C3;        ///< Eq. 5.10/5.11 coefficients when given explicitly
     std::optional<JetTurbulence> turbulence; ///< k, ε of the analytic jets (none: laminar)
+    /// A pulsed nozzle of the analytic jets (carrier/pulsed_jet.h); none (or amplitude 0): steady
+    std::optional<JetPulsation> pulsation;
     // foamField only:
     std::string foamTime = "latestTime"; ///< time directory: latestTime or a time value
     FoamInterpolation interpolation = FoamInterpolation::cellPoint;

@@ -56,8 +56,8 @@ inline TurbulenceLevel turbulenceFromIntensity(double intensity, double velocity
     return {k, std::pow(Cmu, 0.75) * k * std::sqrt(k) / length};
 }
 
-/// Jet (AnalyticJet or RoundLaminarJet) with k, ε and T. Jet needs frame(),
-/// centrelineVelocity(a) and halfWidth(a).
+/// Jet (AnalyticJet, RoundLaminarJet or either pulsed, carrier/pulsed_jet.h) with k, ε and T.
+/// Jet needs frame(), centrelineVelocity(a) and halfWidth(a) (a pulsed jet's are the mean's).
 template <typename Jet> class JetScalars final : public CarrierField {
 public:
     JetScalars(std::unique_ptr<Jet> jet, std::optional<JetTurbulence> turbulence,
@@ -72,9 +72,13 @@ public:
         if (needs.turbulence) sampleTurbulence(points, out);
     }
 
+    /// Steady unless the jet pulsates (carrier/pulsed_jet.h), which then gives ∂U/∂t.
+    bool steady() const override { return jet_->steady(); }
     CarrierNeeds provides() const override {
-        return {
-            .velocityGradient = true, .turbulence = turbulence_.has_value(), .temperature = true};
+        return {.velocityGradient = true,
+                .turbulence = turbulence_.has_value(),
+                .temperature = true,
+                .timeDerivative = !jet_->steady()};
     }
     std::string describe() const override {
         std::ostringstream text;

@@ -6,6 +6,7 @@
 #include "slides/carrier/no_gas.h"
 #include "slides/carrier/oscillating_gas.h"
 #include "slides/carrier/plane_poiseuille.h"
+#include "slides/carrier/pulsed_jet.h"
 #include "slides/carrier/round_laminar_jet.h"
 #include "slides/carrier/taylor_green_vortex.h"
 #include "slides/core/error.h"
@@ -46,15 +47,20 @@ std::unique_ptr<CarrierField> makeCarrier(const CarrierSettings& carrier, const 
         return std::unique_ptr<CarrierField>(
             std::make_unique<JetScalars<Jet>>(std::move(jet), carrier.turbulence, gasTemperature));
     };
+    // A pulsed nozzle wraps the steady jet; without one the steady jet itself, bit for bit.
+    const auto withPulsation = [&]<typename Jet>(std::unique_ptr<Jet> jet) {
+        if (!carrier.pulsation) return withScalars(std::move(jet));
+        return withScalars(std::make_unique<PulsedJet<Jet>>(std::move(jet), *carrier.pulsation));
+    };
     switch (carrier.type) {
     case CarrierType::none: return std::make_unique<NoGas>();
     case CarrierType::analyticJet:
-        return withScalars(std::make_unique<AnalyticJet>(
+        return withPulsation(std::make_unique<AnalyticJet>(
             nozzle,
             AnalyticJetParameters{carrier.profile, carrier.nozzleVelocity, carrier.viscosity,
                                   carrier.coreLength, carrier.C1, carrier.C2, carrier.C3}));
     case CarrierType::roundLaminarJet:
-        return withScalars(std::make_unique<RoundLaminarJet>(
+        return withPulsation(std::make_unique<RoundLaminarJet>(
             nozzle, RoundLaminarJetParameters{carrier.nozzleVelocity, carrier.viscosity,
                                               carrier.coreLength}));
     case CarrierType::oscillatingGas:

@@ -43,6 +43,11 @@ struct RoundLaminarProfile {
         return 2.0 * std::sqrt(std::numbers::sqrt2 - 1.0) * s / similarity;
     }
     double virtualOrigin(double U0) const { return amplitude / U0; } ///< 3K/(8πν U0) [m]
+    /// ∫_from^to ds/u_c(s) = (to² − from²)/(2·amplitude): the time the centreline flow takes
+    /// from s = from to s = to [s].
+    double travelTime(double from, double to) const {
+        return 0.5 * (to - from) * (to + from) / amplitude;
+    }
 };
 
 class RoundLaminarJet final : public SimilarityJet<RoundLaminarProfile> {

@@ -7,7 +7,8 @@
 //
 // Profile needs `ProfileSample at(double s, double y) const` (JetFrame::sample), and at the
 // similarity coordinate s: `centrelineVelocity(s)` [m/s], `halfWidth(s)` [m], the y where
-// u = u_centre/2, and `virtualOrigin(U0)` [m], the s where the centreline speed is U0.
+// u = u_centre/2, `virtualOrigin(U0)` [m], the s where the centreline speed is U0, and
+// `travelTime(from, to)` [s], ∫_from^to ds/u_c(s) in closed form (carrier/pulsed_jet.h).
 #pragma once
 
 #include "slides/carrier/jet_frame.h"
@@ -31,6 +32,18 @@ public:
     double centrelineVelocity(double axialDistance) const {
         if (axialDistance < 0) return 0;
         return profile_.centrelineVelocity(frame_.similarityCoordinate(axialDistance));
+    }
+    /// Time the centreline flow takes from the exit plane to axial distance a ≥ 0,
+    /// τ(a) = ∫_0^a da'/u_c(a'): a/U0 through the core, then the profile's closed form (0 at
+    /// a < 0, where the gas is at rest) [s]. Its derivative is 1/centrelineVelocity(a).
+    double travelTime(double axialDistance) const {
+        if (axialDistance < 0) return 0;
+        const double core = frame_.coreLength();
+        const double origin = frame_.virtualOrigin();
+        const double exitSpeed = profile_.centrelineVelocity(origin);
+        if (axialDistance < core) return axialDistance / exitSpeed;
+        return core / exitSpeed +
+               profile_.travelTime(origin, frame_.similarityCoordinate(axialDistance));
     }
     /// Half-width where u = u_centre/2, at axial distance a ≥ 0 (the core's at a < 0) [m].
     double halfWidth(double axialDistance) const {

@@ -99,6 +99,9 @@ nlohmann::json sceneSettings(const Scene& scene) {
             {"intensity", carrier.turbulence->intensity},
             {"lengthScale", carrier.turbulence->lengthScale},
             {"lengthScaleToHalfWidth", carrier.turbulence->lengthScaleToHalfWidth}};
+    if (carrier.pulsation)
+        settings["carrier"]["pulsation"] = {{"amplitude", carrier.pulsation->amplitude},
+                                            {"frequency", carrier.pulsation->frequency}};
     if (carrier.type == CarrierType::oscillatingGas)
         settings["carrier"]["oscillatingGas"] = {{"amplitude", vec(carrier.oscillationAmplitude)},
                                                  {"frequency", carrier.oscillationFrequency}};

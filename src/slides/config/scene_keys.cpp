@@ -76,6 +76,14 @@ std::vector<KeyDeclaration> declareKeys() {
          "Eq. 5.11 amplitude; continuity fixes it to C1/(3 C3), so it may only repeat that."},
         {"carrier.analyticJetCoeffs.C3", K::scalar, "m^(-1/3)", "-", {}, R::positive,
          "Eq. 5.10 similarity scale; given together with C1."},
+        {"carrier.analyticJetCoeffs.pulsation", K::dictionary, "-", "-", {}, R::any,
+         "A pulsed nozzle, U0(t) = U0 (1 + A sin 2πft), the pulse carried downstream at the mean "
+         "jet's centreline speed (a kinematic model, carrier/pulsed_jet.h); without it the "
+         "jet is steady."},
+        {"carrier.analyticJetCoeffs.pulsation.amplitude", K::scalar, "-", "0", {}, R::nonNegative,
+         "Relative amplitude A of the nozzle velocity, below 1; 0: the steady jet."},
+        {"carrier.analyticJetCoeffs.pulsation.frequency", K::scalar, "Hz", "-", {}, R::positive,
+         "Pulsation frequency f (required when amplitude > 0)."},
         {"carrier.roundLaminarJetCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Coefficients of Schlichting's round laminar jet."},
         {"carrier.roundLaminarJetCoeffs.nozzleVelocity", K::scalar, "m/s", "", {}, R::positive,
@@ -84,6 +92,14 @@ std::vector<KeyDeclaration> declareKeys() {
          "Length of the unentrained core after the nozzle."},
         {"carrier.roundLaminarJetCoeffs.effectiveViscosity", K::scalar, "m^2/s", "-", {},
          R::positive, "Viscosity that sets the spreading rate; default fluid.kinematicViscosity."},
+        {"carrier.roundLaminarJetCoeffs.pulsation", K::dictionary, "-", "-", {}, R::any,
+         "A pulsed nozzle, U0(t) = U0 (1 + A sin 2πft), the pulse carried downstream at the mean "
+         "jet's centreline speed (a kinematic model, carrier/pulsed_jet.h); without it the "
+         "jet is steady."},
+        {"carrier.roundLaminarJetCoeffs.pulsation.amplitude", K::scalar, "-", "0", {}, R::nonNegative,
+         "Relative amplitude A of the nozzle velocity, below 1; 0: the steady jet."},
+        {"carrier.roundLaminarJetCoeffs.pulsation.frequency", K::scalar, "Hz", "-", {}, R::positive,
+         "Pulsation frequency f (required when amplitude > 0)."},
         {"carrier.foamFieldCoeffs", K::dictionary, "-", "-", {}, R::any,
          "OpenFOAM fields of the case: constant/polyMesh and one time directory."},
         {"carrier.foamFieldCoeffs.time", K::word, "-", "latestTime", {}, R::any,

@@ -669,6 +669,23 @@ std::optional<JetTurbulence> readJetTurbulence(const KeyReader& keys) {
     return turbulence;
 }
 
+/// The pulsed nozzle of an analytic jet (carrier/pulsed_jet.h) in coeffs, or nullopt for a steady
+/// one (no pulsation {}, or amplitude 0).
+std::optional<JetPulsation> readJetPulsation(const KeyReader& keys, const std::string& coeffs) {
+    const std::string base = coeffs + ".pulsation";
+    if (!keys.has(base)) return std::nullopt;
+    JetPulsation pulsation;
+    pulsation.amplitude = keys.scalar(base + ".amplitude");
+    if (!(pulsation.amplitude < 1))
+        keys.fail(base + ".amplitude",
+                  "must be below 1: at 1 or more the nozzle velocity U0 (1 + A sin 2πft) would "
+                  "stop or reverse");
+    if (keys.has(base + ".frequency")) pulsation.frequency = keys.scalar(base + ".frequency");
+    if (pulsation.amplitude == 0) return std::nullopt;
+    keys.require(base + ".frequency", "by amplitude > 0");
+    return pulsation;
+}
+
 /// The unsteady forces and spin of physics, as given or left to the scene analysis (auto).
 void readUnsteadyForces(const KeyReader& keys, Scene& scene) {
     PhysicsSettings& physics = scene.physics;
@@ -970,6 +987,7 @@ CarrierSettings readCarrier(const KeyReader& keys, const FluidSettings& fluid) {
     carrier.viscosity =
         keys.optionalScalar(coeffs + ".effectiveViscosity").value_or(fluid.kinematicViscosity);
     carrier.turbulence = readJetTurbulence(keys);
+    carrier.pulsation = readJetPulsation(keys, coeffs);
     if (carrier.type == CarrierType::analyticJet) {
         carrier.profile = *valueNamed(jetGeometryNames(), keys.word(coeffs + ".profile"));
         carrier.C1 = keys.optionalScalar(coeffs + ".C1");
