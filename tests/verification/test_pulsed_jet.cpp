@@ -118,9 +118,9 @@ TEST_P(PulsedJetProfiles, TimeDerivativeAndGradientMatchCentralDifferences) {
     // ∂U/∂t = ωA cos ω(t − τ) U_mean against (U(t + h) − U(t − h))/2h, h = 1e-7 s: truncation
     // (ωh)²/6 = 1.1e-8 of ωA|U_mean|, round-off ε|U|/h = 2e-9|U| against ωA|U_mean| ≥ 750|U|/(1
     // + A), so tolerance 1e-7 ωA|U_mean| (+1e-9 m/s² where U vanishes). ∇U = s ∇U_mean + U_mean ⊗
-    // ∇s against central differences in x (h = 1e-6 m; widths ≥ 1.7 mm and wavelengths u_c/f ≥ 0.5
-    // mm: truncation ≤ 2e-6), with the steady jets' tolerance 2e-6|∇U| + 1e-6 1/s. The pulsation's
-    // part U_mean ⊗ ∇s is reported.
+    // ∇s against central differences in x (h = 1e-6 m; widths ≥ 1.7 mm and wavelengths u_c/f ≥ 7
+    // mm, u_c ≥ 2.8 m/s out to a = 1.5 m: truncation ≤ 4e-7), with the steady jets' tolerance
+    // 2e-6|∇U| + 1e-6 1/s. The pulsation's part U_mean ⊗ ∇s is reported.
     const auto field = pulsedJet(GetParam(), obliqueNozzle());
     const auto steady = steadyJet(GetParam(), obliqueNozzle());
     double worstRate = 0, worstGradient = 0, largestPulsePart = 0;
