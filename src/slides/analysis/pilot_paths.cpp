@@ -30,6 +30,8 @@ Scene pilotScene(const Scene& scene, double dt) {
     }
     if (pilot.injectors.empty())
         pilot.particles.count = std::min(scene.particles.count, pilotParticles);
+    // Its particles keep their species: the ids of its shorter blocks tell them.
+    if (!pilot.particles.alike()) pilot.particles.injectorIds = injectorIdsOf(pilot.injectors);
     for (const auto& row : physicsTermNames()) setTerm(pilot, row.value, false);
     pilot.physics.automaticTerms.clear();
     for (Surface& surface : pilot.surfaces) surface.interaction = SurfaceInteraction::absorb;

@@ -452,13 +452,20 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
     if (resolved.collisions.model == CollisionModel::softSphere && radiusMax_ > 0) {
         // Eq. 2.59: the shortest Hertz contact, of the smallest spheres at the largest speed
         // (or that of the other contact laws, physics/contact_laws.h).
-        const double mass = sphereMass(radiusMin_, resolved.particles.density);
-        const ContactBody smallest{mass, radiusMin_, &resolved.particles.material};
-        const ContactPair pair = contactPair(smallest, smallest);
-        const double duration =
-            resolved.collisions.softSphere.contactLaw == NormalContactLaw::hertz
-                ? hertzContactDuration(pair, referenceSpeed_)
-                : softContactDuration(pair, softContactLawOf(resolved.collisions), referenceSpeed_);
+        // With differing species, the shortest over every pair of them.
+        double duration = INFINITY;
+        const std::vector<ParticleSpecies> species = resolved.particles.allSpecies();
+        for (const ParticleSpecies& a : species)
+            for (const ParticleSpecies& b : species) {
+                const ContactPair pair =
+                    contactPair({sphereMass(radiusMin_, a.density), radiusMin_, &a.material},
+                                {sphereMass(radiusMin_, b.density), radiusMin_, &b.material});
+                duration = std::min(
+                    duration, resolved.collisions.softSphere.contactLaw == NormalContactLaw::hertz
+                                  ? hertzContactDuration(pair, referenceSpeed_)
+                                  : softContactDuration(pair, softContactLawOf(resolved.collisions),
+                                                        referenceSpeed_));
+            }
         limits.push_back({"contactDuration", duration / stepsPerSoftContact});
     }
     const ElectromagneticSettings& charged = resolved.physics.electromagnetic;
@@ -553,8 +560,22 @@ SceneAnalysis analyseWithoutGas(const Scene& scene) {
     return analysis;
 }
 
-SceneAnalysis analyseScene(const Scene& scene, const CarrierField& carrier) {
-    if (scene.carrier.type == CarrierType::none) return analyseWithoutGas(scene);
+SceneAnalysis analyseScene(const Scene& given, const CarrierField& carrier) {
+    if (given.carrier.type == CarrierType::none) return analyseWithoutGas(given);
+    // Differing species: the pilot particles fly as their own, and the estimates are those of
+    // the lightest species, whose response time at each radius is the shortest (τ ∝ ρp).
+    Scene lightest;
+    if (!given.particles.alike()) {
+        lightest = given;
+        const auto& species = given.particles.species;
+        const ParticleSpecies& light =
+            *std::min_element(species.begin(), species.end(),
+                              [](const auto& a, const auto& b) { return a.density < b.density; });
+        lightest.particles.density = light.density;
+        lightest.particles.material = light.material;
+        lightest.particles.specificHeat = light.specificHeat;
+    }
+    const Scene& scene = given.particles.alike() ? given : lightest;
     SceneAnalysis analysis;
     analysis.threshold = scene.physics.autoThreshold;
     analysis.timeStepGiven = scene.time.dt > 0;

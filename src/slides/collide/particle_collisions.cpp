@@ -49,7 +49,6 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
                                  const std::vector<double>& stepLengths) {
     if (cloud.size() < 2) return;
     findContacts(cloud, startPositions);
-    const MaterialSettings& material = particles_.material;
     const bool heats = settings_.heating && !cloud.temperature.empty();
     for (const ParticleContact& contact : contacts_) {
         const std::uint32_t a = contact.a, b = contact.b;
@@ -59,15 +58,16 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
         const Vec3 separation = centreA - centreB;
         if (!(separation.squaredNorm() > 0)) continue; // coincident centres: no normal
         const Vec3 normal = separation.normalized();
-        const double density = particles_.density;
-        const double massA = sphereMass(cloud.radius[a], density);
-        const double massB = sphereMass(cloud.radius[b], density);
+        // Each particle's own species: its mass, and the pair's moduli from both materials.
+        const double massA = sphereMass(cloud.radius[a], particles_.densityOf(cloud.id[a]));
+        const double massB = sphereMass(cloud.radius[b], particles_.densityOf(cloud.id[b]));
         ImpactBody bodyA{cloud.velocity[a], cloud.angularVelocity[a], 1 / massA, cloud.radius[a]};
         ImpactBody bodyB{cloud.velocity[b], cloud.angularVelocity[b], 1 / massB, cloud.radius[b]};
         const double approach = -(bodyA.velocity - bodyB.velocity).dot(normal);
         if (approach <= 0) continue;
         const ContactPair pair =
-            contactPair({massA, cloud.radius[a], &material}, {massB, cloud.radius[b], &material});
+            contactPair({massA, cloud.radius[a], &particles_.materialOf(cloud.id[a])},
+                        {massB, cloud.radius[b], &particles_.materialOf(cloud.id[b])});
         const double e = restitutionCoefficient(settings_.restitution, pair, approach);
         const Vec3 impulse = contactImpulse(bodyA, bodyB, normal, e, settings_.friction);
         const double energyBefore = kineticEnergy(bodyA) + kineticEnergy(bodyB);

@@ -30,25 +30,31 @@ SoftSphereCollisions::SoftSphereCollisions(const CollisionSettings& collisions,
     : settings_(collisions), particles_(particles), surfaces_(surfaces), domain_(domain),
       newWallContacts_(surfaces.size(), 0) {
     law_ = softContactLawOf(collisions);
-    // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle.
-    const ContactBody particle{1.0, 1.0, &particles.material};
-    particleModuli_ = contactPair(particle, particle);
-    for (std::size_t s = 0; s < surfaces.size(); ++s) {
-        wallModuli_.push_back(
-            contactPair(particle, ContactBody{.material = &surfaces[s].material}));
+    // The moduli do not depend on the bodies' sizes: one unit sphere stands for every particle
+    // of a species; two species' pair takes both materials (Hertz's E*, G*).
+    const std::vector<ParticleSpecies> species = particles.allSpecies();
+    speciesCount_ = species.size();
+    for (const ParticleSpecies& a : species)
+        for (const ParticleSpecies& b : species)
+            particleModuli_.push_back(
+                contactPair({1.0, 1.0, &a.material}, ContactBody{1.0, 1.0, &b.material}));
+    for (const ParticleSpecies& a : species)
+        for (std::size_t s = 0; s < surfaces.size(); ++s)
+            wallModuli_.push_back(contactPair({1.0, 1.0, &a.material},
+                                              ContactBody{.material = &surfaces[s].material}));
+    for (std::size_t s = 0; s < surfaces.size(); ++s)
         if (meetsBySoftContact(collisions, surfaces[s].interaction)) softWalls_.push_back(s);
-    }
 }
 
 void SoftSphereCollisions::halfKick(ParticleCloud& cloud,
                                     const std::vector<double>& stepLengths) const {
-    const double density = particles_.density;
     const auto kick = [&](std::size_t i) {
         // A particle without load keeps its velocity as it is (a zero kick could turn −0 to +0).
         const Vec3& force = cloud.contactForce[i];
         const Vec3& torque = cloud.contactTorque[i];
         if (force.isZero(0) && torque.isZero(0)) return;
-        const double kickPerForce = 0.5 * stepLengths[i] / sphereMass(cloud.radius[i], density);
+        const double mass = sphereMass(cloud.radius[i], particles_.densityOf(cloud.id[i]));
+        const double kickPerForce = 0.5 * stepLengths[i] / mass;
         cloud.velocity[i] += force * kickPerForce;
         cloud.angularVelocity[i] += torque * (kickPerForce / inertiaPerMass(cloud.radius[i]));
     };
@@ -84,16 +90,23 @@ bool SoftSphereCollisions::listIsStale(const ParticleCloud& cloud) const {
 }
 
 ContactPair SoftSphereCollisions::pairOf(const Entry& entry, const ParticleCloud& cloud) const {
-    const double density = particles_.density;
     const double radius = cloud.radius[entry.first];
+    const ParticleId id = cloud.id[entry.first];
+    const auto species = static_cast<std::size_t>(particles_.speciesOf(id));
+    const double density = particles_.densityOf(id);
     ContactPair pair;
     if (entry.second >= 0) {
-        const double other = cloud.radius[static_cast<std::size_t>(entry.second)];
-        pair = particleModuli_;
+        const auto second = static_cast<std::size_t>(entry.second);
+        const double other = cloud.radius[second];
+        const ParticleId otherId = cloud.id[second];
+        const auto otherSpecies = static_cast<std::size_t>(particles_.speciesOf(otherId));
+        pair = particleModuli_[speciesCount_ * species + otherSpecies];
         pair.radius = harmonicSum(radius, other);
-        pair.mass = harmonicSum(sphereMass(radius, density), sphereMass(other, density));
+        pair.mass = harmonicSum(sphereMass(radius, density),
+                                sphereMass(other, particles_.densityOf(otherId)));
     } else {
-        pair = wallModuli_[static_cast<std::size_t>(-1 - entry.second)];
+        pair =
+            wallModuli_[surfaces_.size() * species + static_cast<std::size_t>(-1 - entry.second)];
         pair.radius = radius; // a plane: infinite radius and mass
         pair.mass = sphereMass(radius, density);
     }
@@ -255,7 +268,9 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
 
     // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
     const bool heats = settings_.heating && !cloud.temperature.empty();
-    const double density = particles_.density;
+    const auto massOf = [&](std::size_t i) {
+        return sphereMass(cloud.radius[i], particles_.densityOf(cloud.id[i]));
+    };
     const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t k = 0; k < count; ++k) {
@@ -271,13 +286,11 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
             torque += second ? load.torqueOnSecond : load.torqueOnFirst;
             if (conducts) // the pair's two flows are equal and opposite
                 heat += (second ? -load.conductedPower : load.conductedPower) * dt /
-                        (sphereMass(cloud.radius[i], density) * particles_.specificHeat);
+                        (massOf(i) * particles_.specificHeat);
             if (heats && load.dissipatedPower > 0) {
                 const double masses =
-                    sphereMass(cloud.radius[entry.first], density) +
-                    (entry.second >= 0
-                         ? sphereMass(cloud.radius[static_cast<std::size_t>(entry.second)], density)
-                         : 0.0);
+                    massOf(entry.first) +
+                    (entry.second >= 0 ? massOf(static_cast<std::size_t>(entry.second)) : 0.0);
                 heat += collisionalTemperatureRise(load.dissipatedPower * dt,
                                                    particles_.specificHeat, masses);
             }

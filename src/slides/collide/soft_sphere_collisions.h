@@ -116,8 +116,12 @@ private:
     std::vector<std::size_t> softWalls_; ///< surface indices
     /// E*, G*, yield stress and adhesion of two particles, and of a particle on each surface
     /// (radius and mass are the entry's: pairOf).
-    ContactPair particleModuli_;
+    /// The moduli of each pair of species (one entry when the particles are alike): entry
+    /// S·a + b for species a against b, S species; of each species against each surface: entry
+    /// surfaces·a + s.
+    std::vector<ContactPair> particleModuli_;
     std::vector<ContactPair> wallModuli_;
+    std::size_t speciesCount_ = 1;
     double skin_ = 0; ///< [m] of the current list
     CellGrid grid_;
     std::vector<double> slotRadius_; ///< radii in the grid's cell order, scratch of buildList

@@ -131,13 +131,23 @@ nlohmann::json sceneSettings(const Scene& scene) {
           {"minimum", radius.minimum},
           {"maximum", std::isfinite(radius.maximum) ? nlohmann::json(radius.maximum) : nullptr}}},
         {"material", material(scene.particles.material)}};
+    // Injectors whose particles differ: each species, and each injector's.
+    for (const ParticleSpecies& species : scene.particles.species)
+        settings["particles"]["species"].push_back({{"density", species.density},
+                                                    {"material", material(species.material)},
+                                                    {"specificHeat", species.specificHeat}});
     settings["injection"] = {{"mode", nameOf(injectionModeNames(), scene.injection.mode)},
                              {"rate", scene.injection.rate},
                              {"crossSpanSpeed", scene.injection.crossSpanSpeed},
                              {"reinjectEscaped", scene.injection.reinjectEscaped},
                              {"seed", scene.injection.seed}};
-    for (const InjectorSettings& injector : scene.injectors)
+    for (const InjectorSettings& injector : scene.injectors) {
         settings["injectors"][injector.name] = injectorSettings(injector);
+        if (!scene.particles.alike())
+            settings["injectors"][injector.name]["species"] =
+                scene.particles.speciesOfInjector[static_cast<std::size_t>(&injector -
+                                                                           scene.injectors.data())];
+    }
     settings["physics"] = {
         {"drag", nameOf(dragModelNames(), scene.physics.drag)},
         {"gravity", vec(scene.physics.gravity)},

@@ -629,6 +629,101 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
     return material;
 }
 
+/// The key of `property` ("density", "specificHeat", "material") that makes the injectors'
+/// particles differ in it: that of the first injector differing from the first one, if it gives
+/// it, else the first one's.
+std::string differingKey(const KeyReader& keys, const Scene& scene, const std::string& property,
+                         bool (*same)(const ParticleSpecies&, const ParticleSpecies&)) {
+    const auto& injectors = scene.injectors;
+    for (const InjectorSettings& injector : injectors)
+        if (!same(injector.species, injectors.front().species)) {
+            const std::string key = "injectors." + injector.name + "." + property;
+            return keys.has(key) ? key : "injectors." + injectors.front().name + "." + property;
+        }
+    return {};
+}
+
+/// The particle species of the injectors (`injectors.NAME.density`, `.material {}`,
+/// `.specificHeat`, each defaulting to the particles' own), and the refusal of the models that
+/// do not take differing species yet. Injectors all alike leave the particles one species,
+/// theirs.
+void readSpecies(const KeyReader& keys, Scene& scene) {
+    ParticleSettings& particles = scene.particles;
+    if (scene.injectors.empty()) return;
+    const ParticleSpecies own{particles.density, particles.material, particles.specificHeat};
+    std::vector<ParticleSpecies> species;
+    std::vector<std::int32_t> ofInjector;
+    for (InjectorSettings& injector : scene.injectors) {
+        const std::string base = "injectors." + injector.name;
+        ParticleSpecies mine = own;
+        mine.density = keys.optionalScalar(base + ".density").value_or(own.density);
+        const MaterialSettings given = readMaterial(keys, base + ".material");
+        for (auto member : {&MaterialSettings::bulkModulus, &MaterialSettings::shearModulus,
+                            &MaterialSettings::yieldStress, &MaterialSettings::surfaceEnergy})
+            if (given.*member > 0) mine.material.*member = given.*member;
+        mine.specificHeat = keys.optionalScalar(base + ".specificHeat").value_or(own.specificHeat);
+        injector.species = mine;
+        auto found = std::find(species.begin(), species.end(), mine);
+        if (found == species.end()) found = species.insert(species.end(), mine);
+        ofInjector.push_back(static_cast<std::int32_t>(found - species.begin()));
+    }
+    particles.density = species.front().density;
+    particles.material = species.front().material;
+    particles.specificHeat = species.front().specificHeat;
+    if (species.size() == 1) return; // alike: the particles' values are the injectors'
+    particles.species = std::move(species);
+    particles.speciesOfInjector = std::move(ofInjector);
+    particles.injectorIds = injectorIdsOf(scene.injectors);
+
+    const std::string density =
+        differingKey(keys, scene, "density",
+                     [](const auto& a, const auto& b) { return a.density == b.density; });
+    const std::string specificHeat =
+        differingKey(keys, scene, "specificHeat",
+                     [](const auto& a, const auto& b) { return a.specificHeat == b.specificHeat; });
+    PhysicsSettings& physics = scene.physics;
+    const auto refuse = [&](const std::string& key, const std::string& what,
+                            const std::string& model) {
+        keys.fail(key, "differing " + what + " are not supported with " + model +
+                           " yet: give every injector the same, or set it off");
+    };
+    // Terms left to auto stay off; each term set on is refused.
+    const auto leaveOff = [&](std::initializer_list<PhysicsTerm> terms, const std::string& why) {
+        for (AutomaticTerm& automatic : physics.automaticTerms)
+            if (automatic.unavailable.empty() &&
+                std::find(terms.begin(), terms.end(), automatic.term) != terms.end())
+                automatic.unavailable = why;
+    };
+    if (!density.empty()) {
+        const std::string why = "not with differing particle densities (" + density + ") yet";
+        if (physics.history != HistoryModel::none)
+            refuse(density, "densities", "physics.history.model");
+        if (physics.addedMass) refuse(density, "densities", "physics.addedMass");
+        if (physics.pressureGradient) refuse(density, "densities", "physics.pressureGradient");
+        if (physics.lift != LiftModel::none) refuse(density, "densities", "physics.lift");
+        if (physics.spin || physics.spinHistory) refuse(density, "densities", "physics.spin");
+        if (physics.faxen) refuse(density, "densities", "physics.faxen");
+        if (physics.dispersion != DispersionModel::none)
+            refuse(density, "densities", "physics.dispersion.model");
+        if (physics.heatTransfer != HeatTransferModel::none)
+            refuse(density, "densities", "physics.heatTransfer.model");
+        if (physics.electromagnetic.on())
+            refuse(density, "densities", "physics.electromagnetic.model");
+        if (scene.time.integrator == Integrator::adaptiveRungeKutta)
+            refuse(density, "densities", "time.integrator adaptiveRungeKutta");
+        leaveOff({PhysicsTerm::history, PhysicsTerm::addedMass, PhysicsTerm::pressureGradient,
+                  PhysicsTerm::shearLift, PhysicsTerm::spinLift, PhysicsTerm::spin,
+                  PhysicsTerm::dispersion, PhysicsTerm::heatTransfer},
+                 why);
+    }
+    if (!specificHeat.empty()) {
+        if (physics.heatTransfer != HeatTransferModel::none)
+            refuse(specificHeat, "specific heats", "physics.heatTransfer.model");
+        leaveOff({PhysicsTerm::heatTransfer},
+                 "not with differing specific heats (" + specificHeat + ") yet");
+    }
+}
+
 /// The porous layer of an erode surface (Section 5.2): a plane whose material gives the moduli.
 ErosionSettings readErosion(const KeyReader& keys, const std::string& base,
                             const Surface& surface) {
@@ -1164,6 +1259,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
         scene.surfaces.push_back(surface);
     }
     readCollisionsAndDeposition(keys, scene);
+    readSpecies(keys, scene);
     requireFileStatesKept(keys, scene);
     for (const Surface& surface : scene.surfaces)
         if (!surface.patch.empty() && meetsBySoftContact(scene.collisions, surface.interaction))

@@ -12,7 +12,8 @@
 //     {
 //         gunA { model disc; centre (0 0 0); axis (1 0 0); radius 2e-3; count 4000; rate 8e4; }
 //         gunB { model cone; centre (0 0.02 0); axis (1 -0.2 0); count 2000; rate 4e4;
-//                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; } }
+//                coneCoeffs { innerHalfAngle 10; outerHalfAngle 20; speed 30; }
+//                density 8960; material { bulkModulus 140e9; } }  // its own species
 //         rows { model file; file "constant/particles.csv"; }     // integrate/particle_file.h
 //         fromA { model file; file "../runA/slides/particles.h5";
 //                 fileCoeffs { source frame; time 2e-3; } }
@@ -91,6 +92,31 @@ struct RadiusDistribution {
     double meanRadius() const;
 };
 
+/// What a particle is made of, where injectors differ (`injectors.NAME.density`, `.material`,
+/// `.specificHeat`; what an injector does not give is the particles' own).
+struct ParticleSpecies {
+    double density = 0; ///< ρp [kg/m³]
+    MaterialSettings material;
+    double specificHeat = 0; ///< c_p [J/(kg K)]
+    bool operator==(const ParticleSpecies&) const = default;
+};
+
+/// The particle ids of a run's injectors: injector j's own block [firstIds[j], firstIds[j + 1])
+/// (the last up to total), and past all blocks its re-injected particles, interleaved:
+/// the m-th particle injector j re-injects takes id total + J·m + j (J injectors). An id so
+/// names its injector without a table, and each injector's re-injected ids depend only on its
+/// own count, not on the order of escapes.
+struct InjectorIds {
+    std::vector<std::uint64_t> firstIds; ///< ascending
+    std::uint64_t total = 0;             ///< the particles of all blocks
+    /// The index of the injector particle id came from.
+    std::int32_t injectorOf(std::uint64_t id) const;
+    /// The id of the m-th particle injector re-injects.
+    std::uint64_t reinjectedId(std::size_t injector, std::uint64_t m) const {
+        return total + firstIds.size() * m + injector;
+    }
+};
+
 struct ParticleSettings {
     long count = 0;
     double density = 0; ///< ρp [kg/m³]
@@ -99,6 +125,32 @@ struct ParticleSettings {
     double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
     double thermalConductivity = 0;  ///< K_p [W/(m K)], for the Biot number; 0: not given
     double injectionTemperature = 0; ///< θ at injection [K], heat transfer
+    /// Particle species where injectors differ in what their particles are made of: empty when
+    /// every particle is alike (the values above, and nothing costs more); else one entry each
+    /// distinct species, species[0] the first injector's (also the values above). A particle's
+    /// species follows from its id (its injector, through speciesOfInjector), so it moves with
+    /// the id through sorting, removal, the deposit, checkpoints and ranks without an array of
+    /// its own.
+    std::vector<ParticleSpecies> species;
+    std::vector<std::int32_t> speciesOfInjector; ///< one entry an injector (with species)
+    InjectorIds injectorIds;                     ///< with species
+
+    bool alike() const { return species.empty(); }
+    /// The species index of particle id (0 when alike).
+    std::int32_t speciesOf(std::uint64_t id) const {
+        return alike() ? 0
+                       : speciesOfInjector[static_cast<std::size_t>(injectorIds.injectorOf(id))];
+    }
+    double densityOf(std::uint64_t id) const {
+        return alike() ? density : species[static_cast<std::size_t>(speciesOf(id))].density;
+    }
+    const MaterialSettings& materialOf(std::uint64_t id) const {
+        return alike() ? material : species[static_cast<std::size_t>(speciesOf(id))].material;
+    }
+    /// Every species (the particles' own when alike), e.g. for the smallest response time.
+    std::vector<ParticleSpecies> allSpecies() const {
+        return alike() ? std::vector<ParticleSpecies>{{density, material, specificHeat}} : species;
+    }
 };
 
 enum class InjectionMode { rate, allAtStart, lattice };
@@ -226,25 +278,11 @@ struct InjectorSettings {
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T
     EnsembleSettings ensemble;        ///< model ensemble: the packing its rows come from
+    /// What its particles are made of: the particles' own, with what the injector gives instead.
+    ParticleSpecies species;
     /// Its particles are its rows: a file's, or an ensemble's packing (at rest, at time 0).
     bool givesRows() const {
         return model == InjectionModel::file || model == InjectionModel::ensemble;
-    }
-};
-
-/// The particle ids of a run's injectors: injector j's own block [firstIds[j], firstIds[j + 1])
-/// (the last up to total), and past all blocks its re-injected particles, interleaved:
-/// the m-th particle injector j re-injects takes id total + J·m + j (J injectors). An id so
-/// names its injector without a table, and each injector's re-injected ids depend only on its
-/// own count, not on the order of escapes.
-struct InjectorIds {
-    std::vector<std::uint64_t> firstIds; ///< ascending
-    std::uint64_t total = 0;             ///< the particles of all blocks
-    /// The index of the injector particle id came from.
-    std::int32_t injectorOf(std::uint64_t id) const;
-    /// The id of the m-th particle injector re-injects.
-    std::uint64_t reinjectedId(std::size_t injector, std::uint64_t m) const {
-        return total + firstIds.size() * m + injector;
     }
 };
 

@@ -30,9 +30,15 @@ struct RelaxationBatch {
     std::span<const Vec3> slipOrigin;    ///< w: τ follows from the slip |u − w| [m/s]
     std::span<const double> radius;      ///< [m]
     std::span<const double> stepLength;  ///< h_i [s]
+    /// Particles of differing species (integrate/injection_settings.h): each one's density ρp
+    /// [kg/m³] and body acceleration a_i [m/s²] in place of the drag's ρp and the common a;
+    /// empty when the particles are alike.
+    std::span<const double> density = {};
+    std::span<const Vec3> acceleration = {};
 };
 
-/// relaxExactly(x_i, v_i, u_i, τ(R_i, |u_i − w_i|), a, fraction × h_i) from the start state to
+/// relaxExactly(x_i, v_i, u_i, τ(R_i, |u_i − w_i|), a, fraction × h_i) (a_i and ρp,i where the
+/// batch gives them) from the start state to
 /// the end state of every particle i, in parallel (OpenMP) when the batch is large.
 void relaxBatchExactly(const RelaxationBatch& batch, const DragParameters& drag,
                        const Vec3& bodyAcceleration, double fraction);

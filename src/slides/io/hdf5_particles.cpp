@@ -61,6 +61,7 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
         file.writeDataset(g, "angularVelocity", *frame.angularVelocity, "rad/s");
     if (frame.charge) file.writeDataset(g, "charge", *frame.charge, 1, "C");
     if (frame.injector) file.writeDataset(g, "injector", *frame.injector, "1");
+    if (frame.density) file.writeDataset(g, "density", *frame.density, 1, "kg/m^3");
     file.flush();
     frames_.push_back({group, time, count,
                        presentFields(frame.fields, frame.temperature.has_value(),

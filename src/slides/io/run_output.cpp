@@ -60,7 +60,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
           prepared(std::move(directory), resumed ? std::optional(resumed->size()) : std::nullopt)),
       carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
       fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin),
-      electromagnetic_(settings.electromagnetic), injectorIds_(settings.injectorIds) {
+      electromagnetic_(settings.electromagnetic), injectorIds_(settings.injectorIds),
+      injectorDensities_(settings.injectorDensities) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -82,7 +83,8 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
                                      std::to_string(frames_[n].count) + "; cannot restart");
             ParticleFrame frame = stored.view(fields_, heating_, spinning_, electromagnetic_.on());
             std::vector<std::int32_t> injectors;
-            attachInjectors(frame, injectors);
+            std::vector<double> densities;
+            attachInjectors(frame, injectors, densities);
             hdf5_->writeFrame(frames_[n].time, frame);
         }
     }
@@ -126,7 +128,8 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
         frame = gathered.view(fields_, heating_, spinning_, electromagnetic_.on());
     }
     std::vector<std::int32_t> injectors;
-    attachInjectors(frame, injectors);
+    std::vector<double> densities;
+    attachInjectors(frame, injectors, densities);
     const std::string name = frameFileName(frames_.size());
     writeParticlesVtp(directory_ / name, frame);
     const double time = snapshot.counters.time;
@@ -135,12 +138,18 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
     frames_.push_back({time, frame.id.size()});
 }
 
-void RunOutput::attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors) const {
+void RunOutput::attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors,
+                                std::vector<double>& densities) const {
     if (injectorIds_.firstIds.empty()) return;
     injectors.resize(frame.id.size());
     for (std::size_t i = 0; i < frame.id.size(); ++i)
         injectors[i] = injectorIds_.injectorOf(frame.id[i]);
     frame.injector = injectors;
+    if (injectorDensities_.empty()) return;
+    densities.resize(frame.id.size());
+    for (std::size_t i = 0; i < frame.id.size(); ++i)
+        densities[i] = injectorDensities_[static_cast<std::size_t>(injectors[i])];
+    frame.density = densities;
 }
 
 void RunOutput::finish(const RunSnapshot& snapshot, const nlohmann::json& summary) {

@@ -38,6 +38,9 @@ struct RunOutputSettings {
     ElectromagneticSettings electromagnetic;
     /// The particle ids of the injectors of `injectors {}`; none: no injector array.
     InjectorIds injectorIds;
+    /// The density of each injector's particles when they differ (a `density` point array);
+    /// empty when the particles are alike.
+    std::vector<double> injectorDensities;
 };
 
 class RunOutput {
@@ -63,7 +66,9 @@ public:
 
 private:
     /// With several injectors, frame's `injector` array from its ids, held in `injectors`.
-    void attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors) const;
+    /// The frame's injector array, and with differing species its density array.
+    void attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>& injectors,
+                         std::vector<double>& densities) const;
 
     std::filesystem::path directory_;
     std::array<int, 3> carrierResolution_;
@@ -75,6 +80,7 @@ private:
     bool spinning_; ///< particles carry a spin ω
     ElectromagneticSettings electromagnetic_;
     InjectorIds injectorIds_;
+    std::vector<double> injectorDensities_;
 };
 
 } // namespace slides

@@ -120,6 +120,12 @@ void writeParticlesVtp(const std::filesystem::path& file, const ParticleFrame& f
             injector->SetValue(i, (*frame.injector)[static_cast<std::size_t>(i)]);
         data->AddArray(injector);
     }
+    if (frame.density) {
+        auto density = namedDoubleArray("density", 1, count);
+        for (vtkIdType i = 0; i < count; ++i)
+            density->SetValue(i, (*frame.density)[static_cast<std::size_t>(i)]);
+        data->AddArray(density);
+    }
     data->SetActiveScalars("speed");
     data->SetActiveVectors("velocity");
 

@@ -35,6 +35,8 @@ struct ParticleFrame {
     std::optional<std::span<const double>> charge = std::nullopt;        ///< q [C]; none: uncharged
     /// Index of the injector each particle came from; none: one injector.
     std::optional<std::span<const std::int32_t>> injector = std::nullopt;
+    /// Each particle's density ρp [kg/m³]; none: the particles are alike.
+    std::optional<std::span<const double>> density = std::nullopt;
 
     /// Whether every array holds one entry per particle.
     bool consistent() const {
@@ -42,7 +44,8 @@ struct ParticleFrame {
         return position.size() == count && velocity.size() == count && radius.size() == count &&
                state.size() == count && (!temperature || temperature->size() == count) &&
                (!angularVelocity || angularVelocity->size() == count) &&
-               (!charge || charge->size() == count) && (!injector || injector->size() == count);
+               (!charge || charge->size() == count) && (!injector || injector->size() == count) &&
+               (!density || density->size() == count);
     }
 };
 

@@ -33,6 +33,7 @@ struct MaterialSettings {
     double shearModulus = 0;  ///< G [Pa]
     double yieldStress = 0;   ///< Y [Pa]
     double surfaceEnergy = 0; ///< γ [J/m²]
+    bool operator==(const MaterialSettings&) const = default;
 
     bool elastic() const { return bulkModulus > 0 && shearModulus > 0; }
     ElasticMaterial elasticMaterial() const {

@@ -18,6 +18,11 @@ void describeRun(const ResolvedScene& resolved, int threads) {
     std::printf("  particles  %ld, mean radius %.3g m, density %.4g kg/m^3, Stokes response "
                 "time %.3g s\n",
                 scene.particles.count, meanRadius, scene.particles.density, responseTime);
+    for (std::size_t k = 1; k < scene.particles.species.size(); ++k) {
+        const double density = scene.particles.species[k].density;
+        std::printf("             species %zu: density %.4g kg/m^3, Stokes response time %.3g s\n",
+                    k, density, responseTime * density / scene.particles.density);
+    }
     std::string integrator(nameOf(integratorNames(), scene.time.integrator));
     if (scene.time.integrator == Integrator::adaptiveRungeKutta) {
         char tolerance[40];
@@ -35,13 +40,27 @@ void describeRun(const ResolvedScene& resolved, int threads) {
     std::fflush(stdout);
 }
 
+namespace {
+
+/// Each injector's particles' density when they differ; empty when alike.
+std::vector<double> injectorDensities(const Scene& scene) {
+    std::vector<double> densities;
+    if (scene.particles.alike()) return densities;
+    for (const std::int32_t species : scene.particles.speciesOfInjector)
+        densities.push_back(scene.particles.species[static_cast<std::size_t>(species)].density);
+    return densities;
+}
+
+} // namespace
+
 RunOutputSettings runOutputSettings(const Scene& scene) {
     return {.output = scene.output,
             .caseDirectory = scene.caseDirectory,
             .temperature = scene.physics.heatTransfer != HeatTransferModel::none,
             .spin = tracksSpin(scene),
             .electromagnetic = scene.physics.electromagnetic,
-            .injectorIds = injectorIds(scene)};
+            .injectorIds = injectorIds(scene),
+            .injectorDensities = injectorDensities(scene)};
 }
 
 SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {

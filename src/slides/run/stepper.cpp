@@ -66,6 +66,9 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     exchange_ = exchange;
     plane_ = planeConstraintOf(carrier);
+    for (const ParticleSpecies& species : scene.particles.species)
+        speciesAccelerations_.push_back(bodyAcceleration(
+            scene.physics.gravity, species.density, scene.fluid.density, scene.physics.buoyancy));
     cloud_.reserve(static_cast<std::size_t>(scene.particles.count));
     buildStages();
 }
@@ -241,12 +244,25 @@ namespace {
 /// One step of `scheme` (advanceExplicitly) over fraction × h_i for every
 /// particle i with gas velocity u, the response time τ from the slip u − w (w = v, or the
 /// midpoint velocity).
+/// With differing species, particle i's density and body acceleration are density[i] and
+/// acceleration[i] (else empty: the drag's and a).
 template <typename Scheme>
 void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
                  const std::vector<Vec3>& u, const std::vector<Vec3>& w,
                  const std::vector<double>& radius, const DragParameters& drag, const Vec3& a,
-                 const std::vector<double>& h, double fraction) {
+                 const std::vector<double>& h, double fraction, const std::vector<double>& density,
+                 const std::vector<Vec3>& acceleration) {
     const auto count = static_cast<std::ptrdiff_t>(x.size());
+    if (!density.empty()) {
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+        for (std::ptrdiff_t i = 0; i < count; ++i) {
+            DragParameters own = drag;
+            own.particleDensity = density[i];
+            const double tau = dragResponseTime(own, radius[i], (u[i] - w[i]).norm());
+            scheme(x[i], v[i], u[i], tau, acceleration[i], fraction * h[i]);
+        }
+        return;
+    }
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         const double tau = dragResponseTime(drag, radius[i], (u[i] - w[i]).norm());
@@ -311,13 +327,17 @@ void Stepper::advance(double h) {
     }
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
+    holdSpeciesValues();
 
     switch (scene_.time.integrator) {
     case Integrator::explicitEuler:
-        advanceEach(explicitStep, x, v, u, v, radius, drag_, a, stepLengths_, 1.0);
+        advanceEach(explicitStep, x, v, u, v, radius, drag_, a, stepLengths_, 1.0,
+                    particleDensities_, particleAccelerations_);
         break;
     case Integrator::exponentialEuler:
-        relaxBatchExactly({x, v, x, v, u, v, radius, stepLengths_}, drag_, a, 1.0);
+        relaxBatchExactly(
+            {x, v, x, v, u, v, radius, stepLengths_, particleDensities_, particleAccelerations_},
+            drag_, a, 1.0);
         break;
     case Integrator::exponentialMidpoint: advanceByMidpointRule(h); break;
     case Integrator::adaptiveRungeKutta: advanceAdaptively(h); break;
@@ -363,7 +383,14 @@ void Stepper::advanceByMidpointRule(double h) {
             sampled ? std::span<const Vec3>(gas_.velocity.data() + first, n) : scratch.gas.velocity;
         scratch.position.resize(n);
         scratch.velocity.resize(n);
-        relaxBatchExactly({x, v, scratch.position, scratch.velocity, u, v, radius, stepLength},
+        std::span<const double> density;
+        std::span<const Vec3> acceleration;
+        if (!particleDensities_.empty()) {
+            density = {particleDensities_.data() + first, n};
+            acceleration = {particleAccelerations_.data() + first, n};
+        }
+        relaxBatchExactly({x, v, scratch.position, scratch.velocity, u, v, radius, stepLength,
+                           density, acceleration},
                           drag_, bodyAcceleration_, 0.5);
         scratch.locations.assign(locations.begin(), locations.end());
         sampleCarrier(scratch.position, scratch.locations, time_ + 0.5 * h, CarrierNeeds{},
@@ -373,9 +400,9 @@ void Stepper::advanceByMidpointRule(double h) {
         if (keepsLocations)
             keepStartGasWhereOutside(scratch.locations, sampled ? gas_ : scratch.gas,
                                      sampled ? first : 0, scratch.midpointGas);
-        relaxBatchExactly(
-            {x, v, x, v, scratch.midpointGas.velocity, scratch.velocity, radius, stepLength}, drag_,
-            bodyAcceleration_, 1.0);
+        relaxBatchExactly({x, v, x, v, scratch.midpointGas.velocity, scratch.velocity, radius,
+                           stepLength, density, acceleration},
+                          drag_, bodyAcceleration_, 1.0);
     }
 }
 
@@ -420,12 +447,27 @@ void Stepper::advanceAdaptively(double h) {
     adaptiveSteps_ += {attempted, rejected};
 }
 
+void Stepper::holdSpeciesValues() {
+    const ParticleSettings& particles = scene_.particles;
+    if (particles.alike()) return;
+    const std::size_t count = cloud_.size();
+    particleDensities_.resize(count);
+    particleAccelerations_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto species = static_cast<std::size_t>(particles.speciesOf(cloud_.id[i]));
+        particleDensities_[i] = particles.species[species].density;
+        particleAccelerations_[i] = speciesAccelerations_[species];
+    }
+}
+
 void Stepper::flyBallistically(double) {
     if (chargedMotion_) return chargedMotion_->fly(cloud_, stepLengths_);
-    const Vec3& a = bodyAcceleration_;
+    holdSpeciesValues();
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
+        const Vec3& a =
+            particleAccelerations_.empty() ? bodyAcceleration_ : particleAccelerations_[i];
         const double h = stepLengths_[i];
         cloud_.position[i] += (cloud_.velocity[i] + 0.5 * h * a) * h; // exact for constant a
         cloud_.velocity[i] += h * a;

@@ -6,7 +6,8 @@
 
 namespace slides {
 
-void Deposit::add(const Vec3& position, double radius, int surface) {
+void Deposit::add(const Vec3& position, double radius, int surface, std::int32_t species) {
+    species_.push_back(species);
     position_.push_back(position);
     radius_.push_back(radius);
     surface_.push_back(surface);

@@ -10,6 +10,8 @@
 #include "slides/collide/cell_grid.h"
 #include "slides/core/vector.h"
 
+#include <cstdint>
+
 #include <optional>
 #include <vector>
 
@@ -23,7 +25,8 @@ struct DepositTouch {
 
 class Deposit {
 public:
-    void add(const Vec3& position, double radius, int surface);
+    /// species: the particle's (integrate/injection_settings.h), 0 when the particles are alike.
+    void add(const Vec3& position, double radius, int surface, std::int32_t species = 0);
     /// Makes the particles added since the last call visible to firstTouch.
     void index();
 
@@ -35,11 +38,13 @@ public:
     const Vec3& position(std::size_t k) const { return position_[k]; }
     double radius(std::size_t k) const { return radius_[k]; }
     int surface(std::size_t k) const { return surface_[k]; } ///< the target it grew on
+    std::int32_t species(std::size_t k) const { return species_[k]; }
 
 private:
     std::vector<Vec3> position_;
     std::vector<double> radius_;
     std::vector<int> surface_;
+    std::vector<std::int32_t> species_;
     CellGrid grid_;
     std::size_t indexed_ = 0; ///< particles the grid holds
     double largestRadius_ = 0;

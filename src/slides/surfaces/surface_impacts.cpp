@@ -54,7 +54,7 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
             // Sticking dissipates all the kinetic energy it arrived with.
             const Surface& plane = surfaces_[static_cast<std::size_t>(arrival.surface)];
             if (plane.interaction == SurfaceInteraction::deposit && heats()) {
-                const double mass = sphereMass(arrival.radius, particles_.density);
+                const double mass = sphereMass(arrival.radius, particles_.densityOf(arrival.id));
                 const ImpactBody stuck{arrival.velocity, cloud.angularVelocity[i], 1 / mass,
                                        arrival.radius};
                 arrival.temperature +=
@@ -201,17 +201,23 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     if (plane.interaction == SurfaceInteraction::absorb) return arrive();
 
     const double normalSpeed = -contactVelocity.dot(normal);
-    const double mass = sphereMass(radius, particles_.density);
-    const MaterialSettings& particleMaterial = particles_.material;
+    // The particle's own species; a deposited particle met is of its own (Eq. 5.9).
+    const double mass = sphereMass(radius, particles_.densityOf(cloud.id[i]));
+    const MaterialSettings& particleMaterial = particles_.materialOf(cloud.id[i]);
     const ContactBody particle{mass, radius, &particleMaterial};
+    const auto depositMaterial = [&]() -> const MaterialSettings& {
+        if (particles_.alike()) return particles_.material;
+        const auto species = deposit_.species(depositTouch->particle);
+        return particles_.species[static_cast<std::size_t>(species)].material;
+    };
     const ContactPair pair =
         onDeposit ? contactPair(particle, {INFINITY, deposit_.radius(depositTouch->particle),
-                                           &particleMaterial})
+                                           &depositMaterial()})
                   : contactPair(particle, {INFINITY, INFINITY, &plane.material});
     const RestitutionSettings& restitution = collisions_.restitution;
     if (plane.interaction == SurfaceInteraction::deposit &&
         sticks(deposition_, restitution, pair, normalSpeed)) {
-        deposit_.add(centre, radius, surface);
+        deposit_.add(centre, radius, surface, particles_.speciesOf(cloud.id[i]));
         return arrive();
     }
 

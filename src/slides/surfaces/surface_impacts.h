@@ -77,7 +77,7 @@ public:
 
     /// Puts a particle that stuck in an earlier run back into the deposit (restart).
     void addToDeposit(const Arrival& stuck) {
-        deposit_.add(stuck.position, stuck.radius, stuck.surface);
+        deposit_.add(stuck.position, stuck.radius, stuck.surface, particles_.speciesOf(stuck.id));
     }
     /// Whether any surface meets particles here, at the touch (not only soft walls, which
     /// meet them by forces): without one, meet never changes a particle.

@@ -1,0 +1,417 @@
+// ctest-labels: injection
+// Particle species (integrate/injection_settings.h): injectors whose particles differ in density
+// or material (`injectors.NAME.density`, `.material {}`, `.specificHeat`). Injectors that all
+// give the particles' own values run bit for bit as the case without them; two densities settle
+// each at its own Stokes law; a head-on impulse impact of two densities conserves momentum (and
+// with e = 1 kinetic energy) to round-off; a Hertz contact of two materials lasts as Hertz's
+// closed form with the combined E* and m*; a checkpoint of two species restarts to the same
+// bits; the SIMD relaxation with per-particle densities matches the scalar reference lane by
+// lane; the models that do not take differing species refuse them at the injector's key.
+#include "../support/case_runs.h"
+#include "../support/test_scenes.h"
+#include "slides/carrier/no_gas.h"
+#include "slides/config/scene_reader.h"
+#include "slides/core/error.h"
+#include "slides/integrate/integrator.h"
+#include "slides/integrate/relaxation_batch.h"
+#include "slides/io/checkpoint.h"
+#include "slides/physics/contact_pair.h"
+#include "slides/physics/drag.h"
+#include "slides/run/stepper.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace slides {
+namespace {
+
+/// A case dictionary in a scratch directory, read as the command line reads it.
+Scene sceneOf(const test::ScratchDirectory& scratch, const std::string& text) {
+    std::ofstream(scratch.path / "constant" / "slidesProperties") << text;
+    return readScene(scratch.path);
+}
+
+/// The default case's dictionary with `injection {}` replaced by text (and its count removed).
+std::string sprayDictionary(const std::string& injection) {
+    std::string text = test::slurp(test::defaultCase / "constant" / "slidesProperties");
+    const auto count = text.find("count       8000;");
+    text.erase(count, std::string("count       8000;").size());
+    const auto start = text.find("injection\n{");
+    const auto end = text.find("}\n", start) + 2;
+    text.replace(start, end - start, injection);
+    return text;
+}
+
+/// Two guns into the default case's jet; `a` and `b` go into the injectors' entries.
+std::string twoGuns(const std::string& a, const std::string& b,
+                    const std::string& collisions = "none") {
+    return sprayDictionary(R"(
+injectors
+{
+    upper { model cone; centre (0 0.001 0); axis (1 0 0); radius 0; count 300; rate 1e5;
+            coneCoeffs { outerHalfAngle 5; speed 20; } )" +
+                           a + R"( }
+    lower { model disc; centre (0 -0.0005 0); axis (1 0 0); radius 1e-3; count 500;
+            duration 2e-3; crossSpanSpeed 0.5; radiusDistribution { type fixed; value 40e-6; } )" +
+                           b + R"( }
+}
+collisions { model )" + collisions +
+                           "; }\n");
+}
+
+void expectSameBits(const Stepper& p, const Stepper& q) {
+    ASSERT_EQ(p.arrivals().size(), q.arrivals().size());
+    for (std::size_t k = 0; k < p.arrivals().size(); ++k) {
+        ASSERT_EQ(p.arrivals()[k].id, q.arrivals()[k].id);
+        ASSERT_EQ(p.arrivals()[k].time, q.arrivals()[k].time);
+        ASSERT_TRUE(p.arrivals()[k].position == q.arrivals()[k].position);
+        ASSERT_TRUE(p.arrivals()[k].velocity == q.arrivals()[k].velocity);
+    }
+    ASSERT_EQ(p.cloud().size(), q.cloud().size());
+    for (std::size_t i = 0; i < p.cloud().size(); ++i) {
+        ASSERT_EQ(p.cloud().id[i], q.cloud().id[i]);
+        ASSERT_TRUE(p.cloud().position[i] == q.cloud().position[i]) << p.cloud().id[i];
+        ASSERT_TRUE(p.cloud().velocity[i] == q.cloud().velocity[i]) << p.cloud().id[i];
+    }
+}
+
+TEST(ParticleSpecies, InjectorsGivingTheParticlesOwnValuesRunBitForBitAsWithoutThem) {
+    // Regression guard: the same density and material given per injector leave one species,
+    // and the run (impulse collisions on: masses and moduli per particle) is the same bits.
+    test::ScratchDirectory a("species-plain"), b("species-same");
+    const std::string same = "density 5680; material { bulkModulus 167e9; shearModulus 77e9; }";
+    Scene plain = sceneOf(a, twoGuns("", "", "impulse"));
+    Scene given = sceneOf(b, twoGuns(same, same, "impulse"));
+    ASSERT_TRUE(given.particles.alike());
+    for (Scene* scene : {&plain, &given}) scene->time.endTime = 6e-3;
+    const auto carrier = carrierOf(plain);
+    Stepper first(plain, *carrier), second(given, *carrier);
+    while (!first.finished()) first.step();
+    while (!second.finished()) second.step();
+    EXPECT_GT(first.collisions(), 0);
+    EXPECT_EQ(first.collisions(), second.collisions());
+    ASSERT_GT(first.arrivals().size(), 100u);
+    expectSameBits(first, second);
+
+    // Injectors that all give one other density: one species, theirs.
+    test::ScratchDirectory c("species-other");
+    const Scene other = sceneOf(c, twoGuns("density 3000;", "density 3000;"));
+    EXPECT_TRUE(other.particles.alike());
+    EXPECT_EQ(other.particles.density, 3000);
+}
+
+/// Two particles at rest in still gas, of densities 1000 and 8000 (species of injectors a, b),
+/// Stokes drag, gravity and buoyancy.
+TEST(ParticleSpecies, EachDensitySettlesAtItsOwnStokesLaw) {
+    test::ScratchDirectory scratch("species-settling");
+    Scene scene = sceneOf(scratch, sprayDictionary(R"(
+injectors
+{
+    a { model disc; centre (0 0 0); radius 0; count 1; mode allAtStart; density 1000; }
+    b { model disc; centre (0 0.01 0); radius 0; count 1; mode allAtStart; density 8000; }
+}
+)"));
+    ASSERT_EQ(scene.particles.species.size(), 2u);
+    scene.physics.drag = DragModel::stokes;
+    scene.collisions.model = CollisionModel::none;
+    scene.surfaces.clear();
+    scene.domain = {Vec3::Constant(-1e6), Vec3::Constant(1e6)};
+    scene.time.dt = 1e-3;
+    scene.time.endTime = 1.0;
+    scene.time.stopWhenAllDone = false;
+    const Vec3 g = scene.physics.gravity;
+    const test::UniformFlow still(Vec3::Zero());
+    for (const Integrator integrator :
+         {Integrator::exponentialEuler, Integrator::exponentialMidpoint}) {
+        scene.time.integrator = integrator;
+        Stepper stepper(scene, still);
+        for (int n = 0; n < 500; ++n) stepper.step();
+        const double t = stepper.time();
+        const ParticleCloud& cloud = stepper.cloud();
+        ASSERT_EQ(cloud.size(), 2u);
+        for (std::size_t i = 0; i < 2; ++i) {
+            // τ = 2 ρp R²/(9 ρf ν); v(t) = v_t (1 − e^(−t/τ)), v_t = τ (1 − ρf/ρp) g;
+            // y(t) − y(0) = v_t (t − τ (1 − e^(−t/τ))). Exact for the exponential schemes.
+            const double rho = cloud.id[i] == 0 ? 1000 : 8000;
+            const double tau = 2 * rho * cloud.radius[i] * cloud.radius[i] /
+                               (9 * scene.fluid.density * scene.fluid.kinematicViscosity);
+            const Vec3 terminal = tau * (1 - scene.fluid.density / rho) * g;
+            const double decayed = -std::expm1(-t / tau);
+            const Vec3 velocity = terminal * decayed;
+            const Vec3 start(0, cloud.id[i] == 0 ? 0 : 0.01, 0);
+            const Vec3 drop = terminal * (t - tau * decayed);
+            EXPECT_NEAR(cloud.velocity[i].y(), velocity.y(), 1e-12 * std::abs(velocity.y()))
+                << "ρp " << rho;
+            EXPECT_NEAR((cloud.position[i] - start).y(), drop.y(), 1e-12 * std::abs(drop.y()))
+                << "ρp " << rho;
+        }
+        // The two really differ: τ ∝ ρp.
+        EXPECT_GT(std::abs(cloud.velocity[1].y()), 5 * std::abs(cloud.velocity[0].y()));
+    }
+}
+
+/// Species a (index 0, particle id 0) and b (index 1, id 1) in code.
+void twoSpecies(ParticleSettings& particles, const ParticleSpecies& a, const ParticleSpecies& b) {
+    particles.density = a.density;
+    particles.material = a.material;
+    particles.species = {a, b};
+    particles.speciesOfInjector = {0, 1};
+    particles.injectorIds = {{0, 1}, 2};
+}
+
+/// A scene without gas: two particles of the given species, the collision model given.
+Scene twoBodyScene(const ParticleSpecies& a, const ParticleSpecies& b, CollisionModel model,
+                   double dt) {
+    Scene scene = test::singleParticleScene();
+    scene.carrier.type = CarrierType::none;
+    scene.fluid = {0, 0, 293.15};
+    scene.particles.count = 2;
+    scene.particles.radius.value = 1e-3;
+    twoSpecies(scene.particles, a, b);
+    scene.collisions.model = model;
+    scene.collisions.restitution = {RestitutionModel::constant, 1.0, 3};
+    scene.collisions.friction = {0, 0};
+    scene.time.dt = dt;
+    return scene;
+}
+
+/// The particles of cloud, already injected, as the stepper's.
+void start(Stepper& stepper, ParticleCloud cloud) {
+    RunCounters counters;
+    counters.injected = static_cast<long>(cloud.size());
+    cloud.angularVelocity.resize(cloud.size(), Vec3::Zero());
+    stepper.resume(counters, std::move(cloud), {});
+}
+
+/// E [Pa] and ν as the bulk and shear moduli of a material.
+MaterialSettings elastic(double youngs, double poisson) {
+    return {youngs / (3 * (1 - 2 * poisson)), youngs / (2 * (1 + poisson))};
+}
+
+TEST(ParticleSpecies, HeadOnImpulseImpactOfTwoDensitiesConservesMomentumAndEnergy) {
+    const ParticleSpecies light{1000, elastic(1e9, 0.3), 0}, heavy{8000, elastic(2e11, 0.28), 0};
+    const Scene scene = twoBodyScene(light, heavy, CollisionModel::impulse, 1e-4);
+    NoGas vacuum;
+    Stepper stepper(scene, vacuum);
+    const double radius = 1e-3;
+    ParticleCloud cloud;
+    cloud.add(0, Vec3(-radius - 5e-5, 0, 0), Vec3(2, 0, 0), radius);
+    cloud.add(1, Vec3(radius + 5e-5, 0, 0), Vec3(-0.5, 0, 0), radius);
+    start(stepper, cloud);
+    stepper.step();
+    ASSERT_EQ(stepper.collisions(), 1);
+    const double ma = sphereMass(radius, 1000), mb = sphereMass(radius, 8000);
+    const ParticleCloud& after = stepper.cloud();
+    const double va = after.velocity[0].x(), vb = after.velocity[1].x();
+    // Momentum and, with e = 1, kinetic energy; each velocity the elastic closed form
+    // v_a' = ((m_a − m_b) v_a + 2 m_b v_b)/(m_a + m_b) (and a ↔ b).
+    const double momentum = ma * 2 + mb * -0.5;
+    const double energy = 0.5 * ma * 4 + 0.5 * mb * 0.25;
+    EXPECT_NEAR(ma * va + mb * vb, momentum, 1e-15 * (ma * 2 + mb * 0.5));
+    EXPECT_NEAR(0.5 * ma * va * va + 0.5 * mb * vb * vb, energy, 1e-14 * energy);
+    EXPECT_NEAR(va, ((ma - mb) * 2 + 2 * mb * -0.5) / (ma + mb), 1e-14);
+    EXPECT_NEAR(vb, ((mb - ma) * -0.5 + 2 * ma * 2) / (ma + mb), 1e-14);
+}
+
+TEST(ParticleSpecies, HertzContactOfTwoMaterialsLastsAsHertzTheoryWithTheCombinedModuli) {
+    // Sphere a: ρ 2500, E 1e7 Pa, ν 0.3; sphere b: ρ 7800, E 4e7 Pa, ν 0.25; R = 1 mm, closing
+    // at v = 1 m/s. Hertz (Eq. 2.59): 1/E* = (1 − ν_a²)/E_a + (1 − ν_b²)/E_b,
+    // m* = m_a m_b/(m_a + m_b), R* = R/2; δ_max = (15 m* v²/(16 E* √R*))^(2/5),
+    // t_c = 2.9432 δ_max / v (2 ∫₀¹ dx/√(1 − x^(5/2)) = 2.94324).
+    const double radius = 1e-3, dt = 1e-6;
+    const ParticleSpecies a{2500, elastic(1e7, 0.3), 0}, b{7800, elastic(4e7, 0.25), 0};
+    const Scene scene = twoBodyScene(a, b, CollisionModel::softSphere, dt);
+    NoGas vacuum;
+    Stepper stepper(scene, vacuum);
+    ParticleCloud cloud;
+    cloud.add(0, Vec3(-radius - 5e-5, 0, 0), Vec3(0.5, 0, 0), radius);
+    cloud.add(1, Vec3(radius + 5e-5, 0, 0), Vec3(-0.5, 0, 0), radius);
+    start(stepper, cloud);
+    const double ma = sphereMass(radius, 2500), mb = sphereMass(radius, 7800);
+    long loaded = 0;
+    for (int n = 0; n < 100000; ++n) {
+        stepper.step();
+        const ParticleCloud& c = stepper.cloud();
+        const bool hasLoad = c.contactForce[0].squaredNorm() > 0;
+        if (hasLoad) ++loaded;
+        if (loaded > 0 && !hasLoad && (c.position[1] - c.position[0]).norm() > 2 * radius) break;
+    }
+    const double youngs = 1 / ((1 - 0.3 * 0.3) / 1e7 + (1 - 0.25 * 0.25) / 4e7);
+    const double reduced = ma * mb / (ma + mb);
+    const double closing = 1.0;
+    const double depth =
+        std::pow(15 * reduced * closing * closing / (16 * youngs * std::sqrt(radius / 2)), 0.4);
+    const double hertz = 2.94324 * depth / closing;
+    const ParticleCloud& c = stepper.cloud();
+    EXPECT_NEAR(static_cast<double>(loaded) * dt, hertz, 2 * dt); // counted in whole steps
+    // Elastic: the relative speed restored to O((dt/t_c)²), momentum to round-off.
+    EXPECT_NEAR((c.velocity[1] - c.velocity[0]).x(), closing, 1e-4);
+    EXPECT_NEAR(ma * c.velocity[0].x() + mb * c.velocity[1].x(), ma * 0.5 - mb * 0.5,
+                1e-15 * (ma + mb));
+    // The same contact with a's material on both sides is another: E* matters.
+    const ContactPair same = contactPair({ma, radius, &a.material}, {mb, radius, &a.material});
+    const ContactPair mixed = contactPair({ma, radius, &a.material}, {mb, radius, &b.material});
+    EXPECT_NEAR(mixed.youngsModulus, youngs, 1e-9 * youngs);
+    EXPECT_GT(same.youngsModulus, 0);
+    EXPECT_LT(same.youngsModulus, 0.9 * youngs);
+}
+
+TEST(ParticleSpecies, CheckpointOfTwoSpeciesRestartsToTheSameBits) {
+    test::ScratchDirectory scratch("species-checkpoint");
+    Scene scene = sceneOf(scratch, twoGuns("density 2500; material { bulkModulus 40e9; }",
+                                           "density 8000;", "impulse"));
+    ASSERT_EQ(scene.particles.species.size(), 2u);
+    const auto carrier = carrierOf(scene);
+    Stepper whole(scene, *carrier), half(scene, *carrier), resumed(scene, *carrier);
+    for (int step = 0; step < 600; ++step) whole.step();
+    for (int step = 0; step < 300; ++step) half.step();
+    const RunFingerprint fingerprint =
+        fingerprintOf(scratch.path / "constant" / "slidesProperties", scene.time.dt);
+    writeCheckpoint(scratch.path, half.snapshot(), nullptr, {}, 0, {}, fingerprint);
+    CheckpointState state = readCheckpoint(scratch.path, fingerprint);
+    resumed.resume(state.counters, std::move(state.cloud), std::move(state.arrivals));
+    for (int step = 0; step < 300; ++step) resumed.step();
+    EXPECT_GT(whole.collisions(), 0);
+    EXPECT_EQ(resumed.collisions(), whole.collisions());
+    ASSERT_GT(whole.arrivals().size() + whole.cloud().size(), 500u);
+    expectSameBits(whole, resumed);
+}
+
+TEST(ParticleSpecies, SimdRelaxationWithOwnDensitiesMatchesTheScalarLaneByLane) {
+    // 37 particles (whole vectors and a padded tail at any width), densities 500 … 20000 mixed,
+    // each with its own body acceleration (1 − ρf/ρp) g; the scalar relaxExactly with
+    // dragResponseTime of the particle's own density is the reference.
+    const DragParameters drag{DragModel::haiderLevenspiel, 1.2, 1.5e-5, 2500};
+    const Vec3 g(0, -9.81, 0);
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const std::size_t n = 37;
+    std::vector<Vec3> x(n), v(n), u(n), w(n), a(n);
+    std::vector<double> radius(n), h(n), density(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = Vec3(unit(random), unit(random), unit(random));
+        v[i] = 10 * Vec3(unit(random), unit(random), unit(random));
+        u[i] = 20 * Vec3(unit(random), unit(random), unit(random));
+        w[i] = v[i];
+        radius[i] = 5e-6 + 1e-4 * unit(random);
+        h[i] = 1e-4 * (0.5 + unit(random));
+        density[i] = i % 3 == 0 ? 500 : i % 3 == 1 ? 20000 : 3000 + 1000 * unit(random);
+        a[i] = (1 - drag.fluidDensity / density[i]) * g;
+    }
+    std::vector<Vec3> xs = x, vs = v;
+    relaxBatchExactly({xs, vs, xs, vs, u, w, radius, h, density, a}, drag, g, 1.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        DragParameters own = drag;
+        own.particleDensity = density[i];
+        Vec3 xr = x[i], vr = v[i];
+        relaxExactly(xr, vr, u[i], dragResponseTime(own, radius[i], (u[i] - w[i]).norm()), a[i],
+                     h[i]);
+        EXPECT_LE((xs[i] - xr).norm(), 1e-13 * xr.norm()) << i;
+        EXPECT_LE((vs[i] - vr).norm(), 1e-13 * vr.norm()) << i;
+    }
+    // Without densities, the batch is the common-density one: bit for bit unchanged.
+    std::vector<Vec3> xc = x, vc = v, xd = x, vd = v;
+    relaxBatchExactly({xc, vc, xc, vc, u, w, radius, h}, drag, g, 1.0);
+    const std::vector<double> common(n, drag.particleDensity);
+    const std::vector<Vec3> commonA(n, g);
+    relaxBatchExactly({xd, vd, xd, vd, u, w, radius, h, common, commonA}, drag, g, 1.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        EXPECT_LE((xc[i] - xd[i]).norm(), 1e-13 * xc[i].norm()) << i;
+        EXPECT_LE((vc[i] - vd[i]).norm(), 1e-13 * vc[i].norm()) << i;
+    }
+}
+
+TEST(ParticleSpecies, FramesCarryEachParticlesDensityWhenTheyDiffer) {
+    test::ScratchDirectory scratch("species-frames");
+    std::ofstream(scratch.path / "constant" / "slidesProperties")
+        << twoGuns("density 2500;", "density 8000;");
+    const auto output = scratch.path / "out";
+    ASSERT_EQ(
+        test::runCli(scratch.path.string() + " --quiet --end-time 2e-3 --output " + output.string(),
+                     scratch.path / "log"),
+        0)
+        << test::slurp(scratch.path / "log");
+    const std::string vtp = test::slurp(output / "particles_000002.vtp");
+    EXPECT_NE(vtp.find("Name=\"density\""), std::string::npos);
+    const auto summary = nlohmann::json::parse(test::slurp(output / "summary.json"));
+    EXPECT_EQ(summary["settings"]["particles"]["species"].size(), 2u);
+}
+
+TEST(ParticleSpecies, ModelsThatDoNotTakeDifferingSpeciesRefuseThemAtTheInjectorsKey) {
+    test::ScratchDirectory scratch("species-refusals");
+    const auto refusal = [&](const std::string& physics, const std::string& b = "density 8000;") {
+        try {
+            sceneOf(scratch, twoGuns("", b) + physics);
+        } catch (const InputError& error) {
+            return error.key() + ": " + error.reason();
+        }
+        return std::string("accepted");
+    };
+    const std::string tail = " yet: give every injector the same, or set it off";
+    EXPECT_EQ(refusal("physics { history { model basset; } }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.history.model" +
+                  tail);
+    EXPECT_EQ(refusal("physics { addedMass on; }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.addedMass" +
+                  tail);
+    EXPECT_EQ(refusal("physics { pressureGradient on; }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.pressureGradient" +
+                  tail);
+    EXPECT_EQ(refusal("physics { lift saffmanMei; }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.lift" +
+                  tail);
+    EXPECT_EQ(refusal("physics { spin on; }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.spin" +
+                  tail);
+    EXPECT_EQ(refusal("carrier { turbulence { scaling jetLocal; intensity 0.25; "
+                      "lengthScaleToHalfWidth 0.2; } } physics { dispersion { model "
+                      "eddyInteraction; } }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.dispersion.model" +
+                  tail);
+    EXPECT_EQ(refusal("particles { specificHeat 460; } physics { heatTransfer { model "
+                      "ranzMarshall; } }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.heatTransfer.model" +
+                  tail);
+    EXPECT_EQ(refusal("particles { specificHeat 460; } physics { heatTransfer { model "
+                      "ranzMarshall; } }",
+                      "specificHeat 900;"),
+              "injectors.lower.specificHeat: differing specific heats are not supported with "
+              "physics.heatTransfer.model" +
+                  tail);
+    EXPECT_EQ(refusal("physics { electromagnetic { model lorentz; E (0 1 0); } }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "physics.electromagnetic.model" +
+                  tail);
+    EXPECT_EQ(refusal("time { integrator adaptiveRungeKutta; }"),
+              "injectors.lower.density: differing densities are not supported with "
+              "time.integrator adaptiveRungeKutta" +
+                  tail);
+    // Differing materials alone take every model that reads no material.
+    EXPECT_EQ(refusal("physics { history { model basset; } }", "material { yieldStress 1e8; }"),
+              "accepted");
+    // Terms left to auto stay off, saying why.
+    test::ScratchDirectory other("species-auto");
+    const Scene scene = sceneOf(other, twoGuns("", "density 8000;"));
+    for (const AutomaticTerm& term : scene.physics.automaticTerms) {
+        if (term.term == PhysicsTerm::history || term.term == PhysicsTerm::addedMass) {
+            EXPECT_EQ(term.unavailable,
+                      "not with differing particle densities (injectors.lower.density) yet");
+        }
+    }
+}
+
+} // namespace
+} // namespace slides
