@@ -118,7 +118,7 @@ TEST_P(CaseTemplateOfSolvedRun, HoldsTheMeshAndRunsAsWritten) {
         EXPECT_NEAR(domainMax[j], high[j] + margin, 1e-8 * margin * 100) << j;
     }
 
-    // The inlet: a nozzle disc on it (wedge, 2-D), or a patch injector (3-D).
+    // The inlet: a patch injector (3-D, wedge), or a nozzle disc on it (2-D).
     if (param.inletRadius > 0) {
         const Dictionary& nozzle = dictionary.subDict("nozzle");
         EXPECT_NEAR(nozzle.scalar("radius"), param.inletRadius, 1e-8 * param.inletRadius);
@@ -140,7 +140,7 @@ TEST_P(CaseTemplateOfSolvedRun, HoldsTheMeshAndRunsAsWritten) {
 // transientJet: its latest level; of the two slot halves (2 mm each, the same inflow at t = 0.2 s,
 // where the sine of the pulse is zero) the first patch, slotLower.
 INSTANTIATE_TEST_SUITE_P(ShippedRuns, CaseTemplateOfSolvedRun,
-                         ::testing::Values(SolvedRun{"impingingJet", "nozzle", true, 2e-3},
+                         ::testing::Values(SolvedRun{"impingingJet", "nozzle", true, 0},
                                            SolvedRun{"impingingJet3d", "nozzle", false, 0},
                                            SolvedRun{"planarJet", "slot", false, 0.5e-3},
                                            SolvedRun{"transientJet", "slotLower", false, 1e-3}),

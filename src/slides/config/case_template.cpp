@@ -195,18 +195,27 @@ void surfaces(CommentedDictionary& text, const FoamCaseOutline& outline) {
     text.close();
 }
 
-/// The particles entering through the inlet: a patch injector on a 3-D mesh, a nozzle disc on
-/// a wedge or 2-D mesh (carrier/foam_case_outline.h); without an inlet, a small disc at the
+/// Whether the particles enter by a patch injector on the inlet: on a 3-D mesh, and on a wedge
+/// (over the surface the patch sweeps about the axis); a 2-D mesh's inlet gets a nozzle disc.
+bool injectsOnInletPatch(const FoamCaseOutline& outline) {
+    return outline.inlet && outline.shape != FoamMeshShape::twoDimensional;
+}
+
+/// The particles entering through the inlet: a patch injector on a 3-D or wedge mesh, a nozzle
+/// disc on a 2-D mesh (carrier/foam_case_outline.h); without an inlet, a small disc at the
 /// centre of the box. speed: the inflow's [m/s].
 void inletInjection(CommentedDictionary& text, const FoamCaseOutline& outline, double injectionTime,
                     double speed) {
     const Vec3 extent = outline.bounds.max - outline.bounds.min;
-    if (outline.inlet && outline.shape == FoamMeshShape::threeDimensional) {
+    if (injectsOnInletPatch(outline)) {
         const std::string& inlet = outline.inlet->name;
         text.open("injectors");
         text.note("Particles enter through the inlet patch '" + inlet + "' (mean inflow " +
-                  number(speed, 3) +
-                  " m/s). Alternatives: a nozzle disc (model disc), a cone, "
+                  number(speed, 3) + " m/s)" +
+                  (outline.shape == FoamMeshShape::wedge
+                       ? ", over the surface it sweeps about the wedge's axis"
+                       : "") +
+                  ". Alternatives: a nozzle disc (model disc), a cone, "
                   "a file of particles: README.md, \"Injection\".");
         text.open(inlet);
         text.entry("model", "patch");
@@ -222,9 +231,7 @@ void inletInjection(CommentedDictionary& text, const FoamCaseOutline& outline, d
         nozzleInjection(text, inlet.centre, inlet.axis, inlet.radius, inlet.crossSpanDirection,
                         injectionTime, extent.maxCoeff(),
                         "On the inlet patch '" + inlet.name + "' (mean inflow " + number(speed, 3) +
-                            " m/s): its centre" +
-                            (outline.shape == FoamMeshShape::wedge ? " on the wedge's axis" : "") +
-                            ", its inward normal, its extent across it.");
+                            " m/s): its centre" + ", its inward normal, its extent across it.");
     } else {
         const Vec3 centre = 0.5 * (outline.bounds.min + outline.bounds.max);
         nozzleInjection(text, centre, Vec3::UnitX(), 0.01 * extent.maxCoeff(), Vec3::UnitY(),
@@ -261,8 +268,7 @@ std::string foamTemplate(const fs::path& caseDirectory) {
     const double injectionTime = rounded(transitsInjected * transit);
     const double endTime = rounded(transitsTracked * transit);
 
-    const bool patchInjector = outline.inlet && outline.shape == FoamMeshShape::threeDimensional;
-    particles(text, !patchInjector);
+    particles(text, !injectsOnInletPatch(outline));
     inletInjection(text, outline, injectionTime, speed);
     physics(text, "(0 0 0)", "the case's down, e.g. (0 -9.81 0)");
     time(text, endTime);
