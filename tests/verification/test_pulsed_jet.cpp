@@ -13,6 +13,7 @@
 // - the example case foamCases/pulsedJet runs from its dictionary through the scene analysis and
 //   accounts for every particle.
 #include "../support/case_runs.h"
+#include "../support/dictionary_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/analytic_jet.h"
 #include "slides/carrier/pulsed_jet.h"
@@ -34,6 +35,8 @@
 
 namespace slides {
 namespace {
+
+using test::sceneWithCarrier;
 
 using std::numbers::pi;
 
@@ -319,23 +322,6 @@ TEST(PulsedJet, TracerFollowsThePulsedGas) {
     EXPECT_GT(coarse.slip, 0.5);
     EXPECT_LT(coarse.firstOrderResidual, 0.1);
     EXPECT_LT(fine.firstOrderResidual, 0.5 * coarse.firstOrderResidual);
-}
-
-/// A case dictionary with this carrier block, read as a Scene.
-Scene sceneWithCarrier(const std::string& carrier) {
-    const std::string text =
-        "fluid { density 1.2; kinematicViscosity 1.5e-5; }\n"
-        "nozzle { centre (0 0 0); axis (1 0 0); radius 1e-3; }\n"
-        "carrier { " +
-        carrier +
-        " }\n"
-        "particles { count 10; density 1000; radiusDistribution { type fixed; value 1e-5; } }\n"
-        "injection { mode allAtStart; seed 1; }\n"
-        "time { dt 1e-4; endTime 0.01; }\n"
-        "domain { min (-1 -1 -1); max (1 1 1); }\n"
-        "surfaces { }\n"
-        "output { interval 0.01; }\n";
-    return sceneFromDictionary(Dictionary::parseString(text, "slidesProperties"), ".");
 }
 
 /// The InputError message of reading carrier, or "" if it was accepted.

@@ -9,6 +9,7 @@
 //   buoyant sphere follows the decaying vortex, v = U(x(t), t) (Maxey & Riley 1983), which it
 //   does not without ∂U/∂t;
 // - the unsteady keys reach the Scene, and the scene analysis's pilots see ∂U/∂t.
+#include "../support/dictionary_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/oscillating_gas.h"
 #include "slides/carrier/taylor_green_vortex.h"
@@ -28,6 +29,11 @@
 
 namespace slides {
 namespace {
+
+/// The carrier with added mass and pressure gradient on (the terms that take ∂U/∂t).
+Scene sceneWithMaxeyRileyTerms(const std::string& carrier) {
+    return test::sceneWithCarrier(carrier, "addedMass on; pressureGradient on;");
+}
 
 using std::numbers::pi;
 
@@ -209,26 +215,8 @@ TEST(TaylorGreenVortex, NeutrallyBuoyantTracerFollowsTheDecayingVortex) {
     EXPECT_GT(lagging, 1e-2);
 }
 
-/// A case dictionary with this carrier block, read as a Scene.
-Scene sceneWithCarrier(const std::string& carrier) {
-    const std::string text =
-        "fluid { density 1.2; kinematicViscosity 1.5e-5; }\n"
-        "nozzle { centre (0 0 0); axis (1 0 0); radius 1e-3; }\n"
-        "carrier { " +
-        carrier +
-        " }\n"
-        "particles { count 10; density 1000; radiusDistribution { type fixed; value 1e-5; } }\n"
-        "injection { mode allAtStart; seed 1; }\n"
-        "physics { addedMass on; pressureGradient on; }\n"
-        "time { dt 1e-4; endTime 0.01; }\n"
-        "domain { min (-1 -1 -1); max (1 1 1); }\n"
-        "surfaces { }\n"
-        "output { interval 0.01; }\n";
-    return sceneFromDictionary(Dictionary::parseString(text, "slidesProperties"), ".");
-}
-
 TEST(UnsteadyCarrierKeys, ReachTheSceneAndBuildTheirCarriers) {
-    const Scene oscillating = sceneWithCarrier(
+    const Scene oscillating = sceneWithMaxeyRileyTerms(
         "type oscillatingGas; oscillatingGasCoeffs { amplitude (0 2 0); frequency 50; }");
     EXPECT_EQ(oscillating.carrier.type, CarrierType::oscillatingGas);
     EXPECT_EQ(oscillating.carrier.oscillationAmplitude, Vec3(0, 2, 0));
@@ -241,7 +229,7 @@ TEST(UnsteadyCarrierKeys, ReachTheSceneAndBuildTheirCarriers) {
     EXPECT_NEAR(sample.velocity[0].y(), 2, 1e-12);
     EXPECT_NEAR(sample.velocityTimeDerivative[0].y(), 0, 1e-9);
 
-    const Scene vortex = sceneWithCarrier(
+    const Scene vortex = sceneWithMaxeyRileyTerms(
         "type taylorGreenVortex; taylorGreenVortexCoeffs { velocity 3; wavelength 0.2; }");
     EXPECT_EQ(vortex.carrier.vortexVelocity, 3);
     EXPECT_EQ(vortex.carrier.vortexWavelength, 0.2);
@@ -249,7 +237,8 @@ TEST(UnsteadyCarrierKeys, ReachTheSceneAndBuildTheirCarriers) {
     EXPECT_FALSE(carrierOf(vortex)->steady());
     // A required coefficient missing: one error naming it.
     try {
-        sceneWithCarrier("type oscillatingGas; oscillatingGasCoeffs { amplitude (1 0 0); }");
+        sceneWithMaxeyRileyTerms(
+            "type oscillatingGas; oscillatingGasCoeffs { amplitude (1 0 0); }");
         ADD_FAILURE() << "a missing frequency was accepted";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("frequency"), std::string::npos) << error.what();
