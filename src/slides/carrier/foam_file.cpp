@@ -179,9 +179,13 @@ std::string FoamFile::quoted() {
 long FoamFile::label() {
     skipBlank();
     const char* start = text_.c_str() + position_;
-    char* end = nullptr;
-    const long value = std::strtol(start, &end, 10);
-    if (end == start || (*end && !isDelimiter(*end)))
+    // std::from_chars reads no further than the number (strtol's checks may scan to the end of
+    // the text: a whole faces list per label).
+    long value = 0;
+    const bool plus = *start == '+' && start[1] >= '0' && start[1] <= '9';
+    const char* digits = plus ? start + 1 : start; // from_chars takes no '+'
+    const auto [end, error] = std::from_chars(digits, text_.c_str() + text_.size(), value);
+    if (error != std::errc() || end == digits || (*end && !isDelimiter(*end)))
         fail("bad token '" +
              text_.substr(position_, std::min<std::size_t>(20, text_.size() - position_)) +
              "': expected an integer");
