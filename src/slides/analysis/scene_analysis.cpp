@@ -563,7 +563,9 @@ SceneAnalysis analyseWithoutGas(const Scene& scene) {
 SceneAnalysis analyseScene(const Scene& given, const CarrierField& carrier) {
     if (given.carrier.type == CarrierType::none) return analyseWithoutGas(given);
     // Differing species: the pilot particles fly as their own, and the estimates are those of
-    // the lightest species, whose response time at each radius is the shortest (τ ∝ ρp).
+    // the lightest species, whose response time at each radius is the shortest (τ ∝ ρp) and
+    // whose unsteady terms, relative to the drag, the largest (added mass, pressure gradient,
+    // lift and history grow with ρf/ρp, Eq. 3.3).
     Scene lightest;
     if (!given.particles.alike()) {
         lightest = given;

@@ -696,13 +696,6 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
     };
     if (!density.empty()) {
         const std::string why = "not with differing particle densities (" + density + ") yet";
-        if (physics.history != HistoryModel::none)
-            refuse(density, "densities", "physics.history.model");
-        if (physics.addedMass) refuse(density, "densities", "physics.addedMass");
-        if (physics.pressureGradient) refuse(density, "densities", "physics.pressureGradient");
-        if (physics.lift != LiftModel::none) refuse(density, "densities", "physics.lift");
-        if (physics.spin || physics.spinHistory) refuse(density, "densities", "physics.spin");
-        if (physics.faxen) refuse(density, "densities", "physics.faxen");
         if (physics.dispersion != DispersionModel::none)
             refuse(density, "densities", "physics.dispersion.model");
         if (physics.heatTransfer != HeatTransferModel::none)
@@ -711,10 +704,7 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
             refuse(density, "densities", "physics.electromagnetic.model");
         if (scene.time.integrator == Integrator::adaptiveRungeKutta)
             refuse(density, "densities", "time.integrator adaptiveRungeKutta");
-        leaveOff({PhysicsTerm::history, PhysicsTerm::addedMass, PhysicsTerm::pressureGradient,
-                  PhysicsTerm::shearLift, PhysicsTerm::spinLift, PhysicsTerm::spin,
-                  PhysicsTerm::dispersion, PhysicsTerm::heatTransfer},
-                 why);
+        leaveOff({PhysicsTerm::dispersion, PhysicsTerm::heatTransfer}, why);
     }
     if (!specificHeat.empty()) {
         if (physics.heatTransfer != HeatTransferModel::none)

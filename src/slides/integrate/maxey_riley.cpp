@@ -14,15 +14,16 @@
 namespace slides {
 
 MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
-                                     double particleDensity, const TimeSettings& time,
+                                     std::span<const double> densities, const TimeSettings& time,
                                      bool steadyCarrier)
-    : physics_(physics), fluid_(fluid),
-      particleDensity_(particleDensity), drag_{physics.drag, fluid.density,
-                                               fluid.kinematicViscosity, particleDensity},
-      inertia_{physics.addedMass, physics.pressureGradient},
-      bodyAcceleration_(inertia_.bodyAcceleration(physics.gravity, particleDensity, fluid.density,
-                                                  physics.buoyancy)),
-      fluidAccelerationFactor_(inertia_.fluidAccelerationFactor(particleDensity, fluid.density)) {
+    : physics_(physics), fluid_(fluid), inertia_{physics.addedMass, physics.pressureGradient} {
+    for (const double density : densities)
+        species_.push_back(
+            {density,
+             {physics.drag, fluid.density, fluid.kinematicViscosity, density},
+             inertia_.effectiveDensity(density, fluid.density),
+             inertia_.bodyAcceleration(physics.gravity, density, fluid.density, physics.buoyancy),
+             inertia_.fluidAccelerationFactor(density, fluid.density)});
     needs_.velocityGradient = physics.addedMass || physics.pressureGradient ||
                               physics.lift != LiftModel::none || physics.spin;
     needs_.timeDerivative = !steadyCarrier && (physics.addedMass || physics.pressureGradient);
@@ -52,10 +53,9 @@ MaxeyRileyStepper::MaxeyRileyStepper(const PhysicsSettings& physics, const Fluid
 
 Vec3 MaxeyRileyStepper::spinWithHistory(double* state, double age, const Vec3& spin,
                                         const Vec3& rotationStart, const Vec3& rotationEnd,
-                                        double radius, double h) const {
+                                        double radius, double density, double h) const {
     const double viscosity = fluid_.kinematicViscosity;
-    const double responseTime =
-        spinResponseTime(particleDensity_, fluid_.density, viscosity, radius);
+    const double responseTime = spinResponseTime(density, fluid_.density, viscosity, radius);
     const HistoryKernel kernel{radius * radius / viscosity};
     SlipStep step;
     step.h = h;
@@ -80,16 +80,18 @@ Vec3 MaxeyRileyStepper::dragGasVelocity(const CarrierSample& gas, std::size_t i,
 }
 
 void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasStart,
-                                const EndSampler& sampleEnd,
-                                const std::vector<double>& stepLengths) {
+                                const EndSampler& sampleEnd, const std::vector<double>& stepLengths,
+                                std::span<const std::int32_t> species) {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    const auto termsOf = [&](std::ptrdiff_t i) -> const SpeciesTerms& {
+        return species_[species.empty() ? 0 : static_cast<std::size_t>(species[i])];
+    };
     auto& x = cloud.position;
     auto& v = cloud.velocity;
     const auto stateOf = [&](std::ptrdiff_t i) {
         return cloud.modelState.data() + static_cast<std::size_t>(i) * cloud.stateWidth;
     };
     const double fluidDensity = fluid_.density;
-    const double particleDensity = particleDensity_;
     const double viscosity = fluid_.kinematicViscosity;
     const double addedMass = inertia_.addedMassCoefficient();
     // Prediction of the step's end on the smooth part w = v + s0 φ(age) of the velocity (the
@@ -110,8 +112,8 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
             Eigen::Map<Vec3> s0(state + historyOffset_);
             if (state[0] == 0) s0 = dragGasVelocity(gasStart, i, cloud.radius[i]) - v[i]; // now
             startSlip = s0;
-            const double historyRate = bassetHistoryRate(particleDensity, fluidDensity, viscosity,
-                                                         cloud.radius[i], addedMass);
+            const double historyRate = bassetHistoryRate(termsOf(i).density, fluidDensity,
+                                                         viscosity, cloud.radius[i], addedMass);
             modes = startModeStep(historyRate, HistoryStart{startSlip, state[0]}, h);
         }
         const StartMode& now = modes.before;
@@ -146,14 +148,23 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     }
     const auto tauStart = std::span(responseTimes_).first(cloud.size());
     const auto tauEnd = std::span(responseTimes_).last(cloud.size());
-    dragResponseTimes(drag_, cloud.radius, starts, tauStart);
-    dragResponseTimes(drag_, cloud.radius, ends, tauEnd);
+    if (!species.empty()) {
+        densities_.resize(cloud.size());
+        for (std::size_t i = 0; i < cloud.size(); ++i)
+            densities_[i] = species_[static_cast<std::size_t>(species[i])].density;
+    }
+    const std::span<const double> densities =
+        species.empty() ? std::span<const double>() : std::span<const double>(densities_);
+    const DragParameters& drag = species_.front().drag; // ρp: densities, when given
+    dragResponseTimes(drag, cloud.radius, starts, tauStart, densities);
+    dragResponseTimes(drag, cloud.radius, ends, tauEnd, densities);
 
-    const double effectiveDensity = inertia_.effectiveDensity(particleDensity, fluidDensity);
     const LiftModel lift = physics_.lift;
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {
         double* state = stateOf(i);
+        const SpeciesTerms& terms = termsOf(i);
+        const double particleDensity = terms.density, effectiveDensity = terms.effectiveDensity;
         const double radius = cloud.radius[i];
         const Vec3 velocity = v[i];
         const Vec3& u0 = gasStart.velocity[i];
@@ -178,7 +189,7 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
         } else {
             step.dragRate = kStart;
         }
-        step.forceStart = step.forceEnd = bodyAcceleration_;
+        step.forceStart = step.forceEnd = terms.bodyAcceleration;
         if (needs_.velocityLaplacian && physics_.addedMass && step.h > 0) {
             // C_A m_f d/dt((R²/10)∇²u) per effective mass, constant over the step so that the
             // trapezoid rule integrates it to the difference of its ends (physics/faxen.h).
@@ -191,24 +202,25 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
         if (needs_.velocityGradient) {
             const Mat3& grad0 = gasStart.velocityGradient[i];
             const Mat3& grad1 = gasEnd_.velocityGradient[i];
-            step.forceStart += fluidAccelerationFactor_ * steadyFluidAcceleration(u0, grad0);
-            step.forceEnd += fluidAccelerationFactor_ * steadyFluidAcceleration(u1, grad1);
+            const double fluidAcceleration = terms.fluidAccelerationFactor;
+            step.forceStart += fluidAcceleration * steadyFluidAcceleration(u0, grad0);
+            step.forceEnd += fluidAcceleration * steadyFluidAcceleration(u1, grad1);
             if (needs_.timeDerivative) {
-                step.forceStart += fluidAccelerationFactor_ * gasStart.velocityTimeDerivative[i];
-                step.forceEnd += fluidAccelerationFactor_ * gasEnd_.velocityTimeDerivative[i];
+                step.forceStart += fluidAcceleration * gasStart.velocityTimeDerivative[i];
+                step.forceEnd += fluidAcceleration * gasEnd_.velocityTimeDerivative[i];
             }
             const Vec3 vorticity0 = vorticity(grad0), vorticity1 = vorticity(grad1);
             Vec3 spinStart = Vec3::Zero(), spinEnd = Vec3::Zero();
             if (physics_.spin) {
                 Vec3& spin = cloud.angularVelocity[static_cast<std::size_t>(i)];
                 spinStart = spin;
-                spin = spinHistory_
-                           ? spinWithHistory(state + spinHistoryOffset_, state[0], spin,
-                                             0.5 * vorticity0, 0.5 * vorticity1, radius, step.h)
-                           : relaxSpin(
-                                 spin, 0.5 * (vorticity0 + vorticity1),
-                                 spinResponseTime(particleDensity, fluidDensity, viscosity, radius),
-                                 step.h);
+                spin = spinHistory_ ? spinWithHistory(state + spinHistoryOffset_, state[0], spin,
+                                                      0.5 * vorticity0, 0.5 * vorticity1, radius,
+                                                      particleDensity, step.h)
+                                    : relaxSpin(spin, 0.5 * (vorticity0 + vorticity1),
+                                                spinResponseTime(particleDensity, fluidDensity,
+                                                                 viscosity, radius),
+                                                step.h);
                 spinEnd = spin;
             }
             if (lift != LiftModel::none) {

@@ -25,6 +25,9 @@
 // tail memory (A_n and the memory of physics/finite_reynolds_history.h for Mei & Adrian's or
 // Kim's kernel), and the same three for the spin's history, each only when its term is on.
 //
+// Particles of differing densities (species, integrate/injection_settings.h) take their own ρp in
+// every term; each particle's step is the same bits as in a run of its species alone.
+//
 //     physics { history { model basset; accuracy 1e-3; } addedMass on; pressureGradient on;  // or
 //               meiAdrian, kim
 //               lift saffmanMei; spin on; spinHistory on; faxen on; }
@@ -40,19 +43,23 @@
 #include "slides/physics/physics_settings.h"
 #include "slides/physics/unsteady.h"
 
+#include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace slides {
 
 class MaxeyRileyStepper {
 public:
-    /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run. The
-    /// history memory is sized for steps of time.dt up to time.endTime. With an unsteady carrier
+    /// Used when PhysicsSettings::unsteadyForces(); otherwise the stepper's schemes run.
+    /// densities[s] is ρp of species s (one entry when the particles are alike). The history
+    /// memory is sized for steps of time.dt up to time.endTime. With an unsteady carrier
     /// (steadyCarrier false) the fluid acceleration takes ∂U/∂t from the samples too.
     MaxeyRileyStepper(const PhysicsSettings& physics, const FluidSettings& fluid,
-                      double particleDensity, const TimeSettings& time, bool steadyCarrier = true);
+                      std::span<const double> densities, const TimeSettings& time,
+                      bool steadyCarrier = true);
 
     /// Doubles of model state per particle: the first of each particle's ParticleCloud::stateWidth.
     std::size_t stateWidth() const { return width_; }
@@ -64,25 +71,32 @@ public:
 
     /// Advances every particle i over stepLengths[i]: gasStart is the gas each sees at the
     /// step's start (with what needs() asks for), sampleEnd samples the predicted ends.
+    /// species[i] is particle i's species (empty: all of species 0).
     void advance(ParticleCloud& cloud, const CarrierSample& gasStart, const EndSampler& sampleEnd,
-                 const std::vector<double>& stepLengths);
+                 const std::vector<double>& stepLengths, std::span<const std::int32_t> species);
 
 private:
+    /// What ρp sets in the step's terms, for one species.
+    struct SpeciesTerms {
+        double density;                 ///< ρp [kg/m³]
+        DragParameters drag;            ///< with ρp
+        double effectiveDensity;        ///< ρp + C_A ρf (physics/unsteady.h)
+        Vec3 bodyAcceleration;          ///< gravity and buoyancy per effective mass
+        double fluidAccelerationFactor; ///< of DU/Dt: pressure gradient and added mass
+    };
+
     /// The gas velocity the drag and history see at sample i: u, or u + (R²/6)∇²u with the
     /// Faxén terms (physics/faxen.h).
     Vec3 dragGasVelocity(const CarrierSample& gas, std::size_t i, double radius) const;
     /// ω after a step of h under the steady and history torques of Eq. 3.19, with the fluid
     /// rotation ½∇×U at its start and end; state holds σ0, I_n and the memory.
     Vec3 spinWithHistory(double* state, double age, const Vec3& spin, const Vec3& rotationStart,
-                         const Vec3& rotationEnd, double radius, double h) const;
+                         const Vec3& rotationEnd, double radius, double density, double h) const;
 
     PhysicsSettings physics_;
     FluidSettings fluid_;
-    double particleDensity_;
-    DragParameters drag_;
     FluidInertia inertia_;
-    Vec3 bodyAcceleration_;
-    double fluidAccelerationFactor_;
+    std::vector<SpeciesTerms> species_; ///< one entry a species
     CarrierNeeds needs_;
     std::optional<WindowTailLayout> memory_;             ///< of both histories, when either is on
     std::optional<FiniteReynoldsLayout> finiteReynolds_; ///< Mei & Adrian's or Kim's kernel
@@ -97,6 +111,7 @@ private:
     std::vector<StartModeStep> startModes_; ///< φ and its integrals at both ends of the step
     std::vector<double> slipSpeeds_;        ///< |u − v| the drag is taken at: N starts, N ends
     std::vector<double> responseTimes_;     ///< τ at those slips, the same layout
+    std::vector<double> densities_;         ///< ρp at those slips, with differing species
 };
 
 } // namespace slides

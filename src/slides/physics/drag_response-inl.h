@@ -55,12 +55,13 @@ HWY_INLINE V ResponseTime(D d, const DragParameters& drag, V radius, V slip) {
 }
 
 /// τ as above for particles of their own density ρp, one a lane (particle species,
-/// integrate/injection_settings.h): τ_St = ρp · 2 R² / (9 ρf ν).
+/// integrate/injection_settings.h): 2 ρp / (9 ρf ν) rounded as the kernel above rounds it, so a
+/// particle's τ is the same bits as in a run of its density alone.
 template <class D, class V>
 HWY_INLINE V ResponseTime(D d, const DragParameters& drag, V radius, V slip, V density) {
     const V reynolds = hn::Mul(hn::Mul(hn::Set(d, 2.0 / drag.kinematicViscosity), radius), slip);
-    const V stokes =
-        hn::Mul(density, hn::Set(d, 2.0 / (9.0 * drag.fluidDensity * drag.kinematicViscosity)));
+    const V stokes = hn::Div(hn::Mul(hn::Set(d, 2.0), density),
+                             hn::Set(d, 9.0 * drag.fluidDensity * drag.kinematicViscosity));
     return hn::Div(hn::Mul(stokes, hn::Mul(radius, radius)),
                    DragCorrection(d, drag.model, reynolds));
 }

@@ -14,8 +14,11 @@
 namespace slides {
 
 /// responseTime[i] = dragResponseTime(drag, radius[i], slipSpeed[i]), in parallel (OpenMP) when
-/// the batch is large.
+/// the batch is large; with density given, particle i's own ρp = density[i] (particle species,
+/// integrate/injection_settings.h) in place of drag.particleDensity, to the same bits as a batch
+/// of that density alone.
 void dragResponseTimes(const DragParameters& drag, std::span<const double> radius,
-                       std::span<const double> slipSpeed, std::span<double> responseTime);
+                       std::span<const double> slipSpeed, std::span<double> responseTime,
+                       std::span<const double> density = {});
 
 } // namespace slides

@@ -34,8 +34,10 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         throw std::logic_error("time.dt is not set: the scene analysis chooses it "
                                "(analysis/scene_analysis.h)");
     if (scene.physics.unsteadyForces()) {
-        maxeyRiley_.emplace(scene.physics, scene.fluid, scene.particles.density, scene.time,
-                            carrier.steady());
+        std::vector<double> densities;
+        for (const ParticleSpecies& species : scene.particles.allSpecies())
+            densities.push_back(species.density);
+        maxeyRiley_.emplace(scene.physics, scene.fluid, densities, scene.time, carrier.steady());
         cloud_.stateWidth = maxeyRiley_->stateWidth();
         if (maxeyRiley_->needs().velocityLaplacian && !carrier.provides().velocityLaplacian)
             throw std::logic_error("Faxén terms on a carrier without ∇²U: refused when the scene "
@@ -304,6 +306,7 @@ void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
+    holdSpeciesValues();
     if (maxeyRiley_) {
         // The predicted ends walk from the particles' cells and see the same eddies.
         midpointLocations_ = cloud_.carrierLocation;
@@ -313,7 +316,7 @@ void Stepper::advance(double h) {
             if (plane_) plane_->project(out.velocity);
             keepStartGasWhereOutside(midpointLocations_, gas_, 0, out);
         };
-        return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_);
+        return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_, particleSpecies_);
     }
     if (chargedMotion_ && scene_.time.integrator != Integrator::adaptiveRungeKutta) {
         midpointLocations_ = cloud_.carrierLocation;
@@ -327,7 +330,6 @@ void Stepper::advance(double h) {
     }
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
-    holdSpeciesValues();
 
     switch (scene_.time.integrator) {
     case Integrator::explicitEuler:
@@ -451,10 +453,12 @@ void Stepper::holdSpeciesValues() {
     const ParticleSettings& particles = scene_.particles;
     if (particles.alike()) return;
     const std::size_t count = cloud_.size();
+    particleSpecies_.resize(count);
     particleDensities_.resize(count);
     particleAccelerations_.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const auto species = static_cast<std::size_t>(particles.speciesOf(cloud_.id[i]));
+        particleSpecies_[i] = particles.speciesOf(cloud_.id[i]);
+        const auto species = static_cast<std::size_t>(particleSpecies_[i]);
         particleDensities_[i] = particles.species[species].density;
         particleAccelerations_[i] = speciesAccelerations_[species];
     }

@@ -146,8 +146,8 @@ private:
     void advance(double h);
     /// 3. the stream step without gas (carrier none): gravity only, exactly.
     void flyBallistically(double h);
-    /// Fills particleDensities_ and particleAccelerations_ for the particles in flight (with
-    /// differing species only).
+    /// Fills particleSpecies_, particleDensities_ and particleAccelerations_ for the particles in
+    /// flight (with differing species only).
     void holdSpeciesValues();
     /// 3b. temperatures relax toward the gas temperature.
     void heat(double h);
@@ -211,6 +211,7 @@ private:
     std::vector<double> stepLengths_; ///< h, or the remainder of the step for new particles
     /// Particles of differing species (scene.particles.species): each one's ρp and body
     /// acceleration in this step; empty when the particles are alike.
+    std::vector<std::int32_t> particleSpecies_;
     std::vector<double> particleDensities_;
     std::vector<Vec3> particleAccelerations_;
     std::vector<Vec3> speciesAccelerations_; ///< one a species
