@@ -835,7 +835,7 @@ TEST(FileInjection, BadRowsAreInputErrorsNamingFileLineAndColumn) {
     EXPECT_EQ(refusal("x y z u v w d t\n0 0 0 1 1 1 1e-4 2\n0 0 0 1 1 1 1e-4 1\n"),
               "3 t: goes back in time: rows must be in order of injection time");
     EXPECT_EQ(refusal("x y z u v w diameter\n"),
-              "1 diameter: unknown column; columns are x y z u v w d r t wx wy wz T");
+              "1 diameter: unknown column; columns are x y z u v w d r t wx wy wz T rho");
     EXPECT_EQ(refusal("x y z u v w r\n0 0 0 1 1 1\n"), "2 : 6 values, the header names 7 columns");
     // The command line: one message, exit status 2.
     std::ofstream(table) << "x y z u v w r\n0 0 0 1 1 1 -1\n";

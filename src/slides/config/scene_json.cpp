@@ -3,6 +3,7 @@
 #include "slides/core/name_table.h"
 
 #include <cmath>
+#include <set>
 
 namespace slides {
 
@@ -143,10 +144,14 @@ nlohmann::json sceneSettings(const Scene& scene) {
                              {"seed", scene.injection.seed}};
     for (const InjectorSettings& injector : scene.injectors) {
         settings["injectors"][injector.name] = injectorSettings(injector);
-        if (!scene.particles.alike())
-            settings["injectors"][injector.name]["species"] =
-                scene.particles.speciesOfInjector[static_cast<std::size_t>(&injector -
-                                                                           scene.injectors.data())];
+        if (scene.particles.alike()) continue;
+        // Its species; those of its rows where they differ (a file's densities).
+        const auto species = scene.particles.speciesOfParticles(
+            static_cast<std::size_t>(&injector - scene.injectors.data()));
+        settings["injectors"][injector.name]["species"] =
+            species.size() == 1
+                ? nlohmann::json(species.front())
+                : nlohmann::json(std::set<std::int32_t>(species.begin(), species.end()));
     }
     settings["physics"] = {
         {"drag", nameOf(dragModelNames(), scene.physics.drag)},

@@ -331,8 +331,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Model file, its format told by its content (integrate/particle_file.h): a previous "
          "run's particles.h5 (its arrivals, or a frame: fileCoeffs.source); an OpenFOAM "
          "positions list (FoamFile header, as manualInjection's kinematicCloudPositions); else a "
-         "CSV whose header names its columns (x y z u v w, d or r; optional t, wx wy wz, T), a "
-         "particle a row in order of t. Relative to the case directory."},
+         "CSV whose header names its columns (x y z u v w, d or r; optional t, wx wy wz, T, "
+         "rho: a species per distinct density), a particle a row in order of t. Relative to the "
+         "case directory."},
         {"injectors.*.fileCoeffs", K::dictionary, "-", "-", {}, R::any,
          "Model file: which particles of a particles.h5, the velocity of a positions list."},
         {"injectors.*.fileCoeffs.source", K::word, "-", "arrivals",

@@ -629,32 +629,48 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
     return material;
 }
 
-/// The key of `property` ("density", "specificHeat", "material") that makes the injectors'
-/// particles differ in it: that of the first injector differing from the first one, if it gives
-/// it, else the first one's.
+/// The key of `property` ("density", "specificHeat", "material") that makes the particles
+/// differ in it: that of the first injector with a particle differing from the first one, if it
+/// gives it, else the first injector's. Densities a file's rows give are its `file` key's.
 std::string differingKey(const KeyReader& keys, const Scene& scene, const std::string& property,
                          bool (*same)(const ParticleSpecies&, const ParticleSpecies&)) {
     const auto& injectors = scene.injectors;
-    for (const InjectorSettings& injector : injectors)
-        if (!same(injector.species, injectors.front().species)) {
-            const std::string key = "injectors." + injector.name + "." + property;
-            return keys.has(key) ? key : "injectors." + injectors.front().name + "." + property;
-        }
+    const ParticleSettings& particles = scene.particles;
+    const auto keyOf = [&](const InjectorSettings& injector) {
+        const bool fromRows = property == "density" && injector.rowsGiveDensity;
+        return "injectors." + injector.name + "." + (fromRows ? "file" : property);
+    };
+    for (std::size_t j = 0; j < injectors.size(); ++j)
+        for (const std::int32_t species : particles.speciesOfParticles(j))
+            if (!same(particles.species[static_cast<std::size_t>(species)],
+                      particles.species.front())) {
+                const std::string key = keyOf(injectors[j]);
+                return keys.has(key) ? key : keyOf(injectors.front());
+            }
     return {};
 }
 
 /// The particle species of the injectors (`injectors.NAME.density`, `.material {}`,
-/// `.specificHeat`, each defaulting to the particles' own), and the refusal of the models that
-/// do not take differing species yet. Injectors all alike leave the particles one species,
-/// theirs.
+/// `.specificHeat`, each defaulting to the particles' own; a file's densities per row,
+/// integrate/particle_file.h), and the refusal of the models that do not take differing species
+/// yet. Injectors all alike leave the particles one species, theirs.
 void readSpecies(const KeyReader& keys, Scene& scene) {
     ParticleSettings& particles = scene.particles;
     if (scene.injectors.empty()) return;
     const ParticleSpecies own{particles.density, particles.material, particles.specificHeat};
     std::vector<ParticleSpecies> species;
     std::vector<std::int32_t> ofInjector;
+    std::vector<std::vector<std::int32_t>> ofRow;
+    const auto indexOf = [&](const ParticleSpecies& one) {
+        auto found = std::find(species.begin(), species.end(), one);
+        if (found == species.end()) found = species.insert(species.end(), one);
+        return static_cast<std::int32_t>(found - species.begin());
+    };
     for (InjectorSettings& injector : scene.injectors) {
         const std::string base = "injectors." + injector.name;
+        if (injector.rowsGiveDensity && keys.has(base + ".density"))
+            keys.fail(base + ".density", "its file gives its particles' densities (" +
+                                             keys.word(base + ".file") + ")");
         ParticleSpecies mine = own;
         mine.density = keys.optionalScalar(base + ".density").value_or(own.density);
         const MaterialSettings given = readMaterial(keys, base + ".material");
@@ -662,10 +678,20 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
                             &MaterialSettings::yieldStress, &MaterialSettings::surfaceEnergy})
             if (given.*member > 0) mine.material.*member = given.*member;
         mine.specificHeat = keys.optionalScalar(base + ".specificHeat").value_or(own.specificHeat);
+        std::vector<std::int32_t> rows;
+        if (injector.rowsGiveDensity) {
+            for (const ParticleRow& row : injector.rows) {
+                ParticleSpecies its = mine;
+                its.density = row.density;
+                rows.push_back(indexOf(its));
+            }
+            mine.density = injector.rows.front().density;
+        }
         injector.species = mine;
-        auto found = std::find(species.begin(), species.end(), mine);
-        if (found == species.end()) found = species.insert(species.end(), mine);
-        ofInjector.push_back(static_cast<std::int32_t>(found - species.begin()));
+        ofInjector.push_back(indexOf(mine));
+        if (std::all_of(rows.begin(), rows.end(), [&](auto s) { return s == rows.front(); }))
+            rows.clear(); // one species: the injector's
+        ofRow.push_back(std::move(rows));
     }
     particles.density = species.front().density;
     particles.material = species.front().material;
@@ -673,6 +699,8 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
     if (species.size() == 1) return; // alike: the particles' values are the injectors'
     particles.species = std::move(species);
     particles.speciesOfInjector = std::move(ofInjector);
+    if (std::any_of(ofRow.begin(), ofRow.end(), [](const auto& rows) { return !rows.empty(); }))
+        particles.speciesOfRow = std::move(ofRow);
     particles.injectorIds = injectorIdsOf(scene.injectors);
 
     const std::string density =

@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -125,21 +126,34 @@ struct ParticleSettings {
     double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
     double thermalConductivity = 0;  ///< K_p [W/(m K)], for the Biot number; 0: not given
     double injectionTemperature = 0; ///< θ at injection [K], heat transfer
-    /// Particle species where injectors differ in what their particles are made of: empty when
-    /// every particle is alike (the values above, and nothing costs more); else one entry each
-    /// distinct species, species[0] the first injector's (also the values above). A particle's
-    /// species follows from its id (its injector, through speciesOfInjector), so it moves with
-    /// the id through sorting, removal, the deposit, checkpoints and ranks without an array of
-    /// its own.
+    /// Particle species where injectors, or the rows of a file injector, differ in what their
+    /// particles are made of: empty when every particle is alike (the values above, and nothing
+    /// costs more); else one entry each distinct species, species[0] the first injector's (its
+    /// first row's; also the values above). A particle's species follows from its id (its
+    /// injector, through speciesOfInjector, or its row there, through speciesOfRow), so it moves
+    /// with the id through sorting, removal, the deposit, checkpoints and ranks without an array
+    /// of its own.
     std::vector<ParticleSpecies> species;
     std::vector<std::int32_t> speciesOfInjector; ///< one entry an injector (with species)
-    InjectorIds injectorIds;                     ///< with species
+    /// One entry an injector: its rows' species where they differ (a file's densities), row
+    /// id − firstId; empty for the others, and altogether when no injector's rows differ.
+    std::vector<std::vector<std::int32_t>> speciesOfRow;
+    InjectorIds injectorIds; ///< with species
 
     bool alike() const { return species.empty(); }
-    /// The species index of particle id (0 when alike).
+    /// The species index of particle id (0 when alike). Re-injected ids, past all blocks, are of
+    /// injectors that draw their particles (a file injector does not re-inject): never a row's.
     std::int32_t speciesOf(std::uint64_t id) const {
-        return alike() ? 0
-                       : speciesOfInjector[static_cast<std::size_t>(injectorIds.injectorOf(id))];
+        if (alike()) return 0;
+        const auto injector = static_cast<std::size_t>(injectorIds.injectorOf(id));
+        const auto species = speciesOfParticles(injector);
+        return species.size() == 1 ? species.front() : species[id - injectorIds.firstIds[injector]];
+    }
+    /// The species of injector's particles: one a row where its rows differ, else its one.
+    std::span<const std::int32_t> speciesOfParticles(std::size_t injector) const {
+        if (injector < speciesOfRow.size() && !speciesOfRow[injector].empty())
+            return speciesOfRow[injector];
+        return {&speciesOfInjector[injector], 1};
     }
     double densityOf(std::uint64_t id) const {
         return alike() ? density : species[static_cast<std::size_t>(speciesOf(id))].density;
@@ -257,6 +271,7 @@ struct ParticleRow {
     double time = 0;                     ///< injection time after the injector's start [s]
     Vec3 angularVelocity = Vec3::Zero(); ///< [rad/s], when the file gives it
     double temperature = 0;              ///< [K], when the file gives it
+    double density = 0;                  ///< ρp [kg/m³], when the file gives it
 };
 
 /// One injector: where, how many, when, which sizes and with which velocity its particles
@@ -277,8 +292,10 @@ struct InjectorSettings {
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T
+    bool rowsGiveDensity = false;     ///< the file has rho (a CSV)
     EnsembleSettings ensemble;        ///< model ensemble: the packing its rows come from
-    /// What its particles are made of: the particles' own, with what the injector gives instead.
+    /// What its particles are made of: the particles' own, with what the injector gives instead
+    /// (with rowsGiveDensity, its first row's density).
     ParticleSpecies species;
     /// Its particles are its rows: a file's, or an ensemble's packing (at rest, at time 0).
     bool givesRows() const {

@@ -16,8 +16,8 @@ namespace slides {
 namespace {
 
 std::vector<ParticleRow> readCsv(const std::filesystem::path& path, InjectorSettings& injector) {
-    const CsvTable table =
-        readCsvTable(path, {"x", "y", "z", "u", "v", "w", "d", "r", "t", "wx", "wy", "wz", "T"});
+    const CsvTable table = readCsvTable(
+        path, {"x", "y", "z", "u", "v", "w", "d", "r", "t", "wx", "wy", "wz", "T", "rho"});
     for (const char* name : {"x", "y", "z", "u", "v", "w"})
         if (!table.column(name))
             table.fail(0, name, "missing column (the header needs x y z u v w, d or r)");
@@ -30,6 +30,7 @@ std::vector<ParticleRow> readCsv(const std::filesystem::path& path, InjectorSett
     if (spinColumns % 3 != 0) table.fail(0, "wx", "give the spin as wx wy wz, all three");
     injector.rowsGiveSpin = spinColumns == 3;
     injector.rowsGiveTemperature = table.column("T").has_value();
+    injector.rowsGiveDensity = table.column("rho").has_value();
     const auto at = [&](const std::vector<double>& row, const char* name) {
         return row[*table.column(name)];
     };
@@ -46,6 +47,9 @@ std::vector<ParticleRow> readCsv(const std::filesystem::path& path, InjectorSett
         if (injector.rowsGiveTemperature) row.temperature = at(values, "T");
         if (injector.rowsGiveTemperature && !(row.temperature > 0))
             table.fail(k, "T", "must be a positive number (kelvin)");
+        if (injector.rowsGiveDensity) row.density = at(values, "rho");
+        if (injector.rowsGiveDensity && !(row.density > 0))
+            table.fail(k, "rho", "must be a positive number (kg/m^3)");
         if (!(row.radius > 0)) table.fail(k, diameter ? "d" : "r", "must be a positive number");
         if (row.time < 0) table.fail(k, "t", "must not be negative");
         if (!rows.empty() && row.time < rows.back().time)
@@ -90,7 +94,7 @@ void readParticleFile(const std::filesystem::path& file, InjectorSettings& injec
             injector.rows[k].velocity = injector.file.velocity;
             injector.rows[k].radius = radius.draw(injector.injection.seed, injector.firstId + k);
         }
-        injector.rowsGiveSpin = injector.rowsGiveTemperature = false;
+        injector.rowsGiveSpin = injector.rowsGiveTemperature = injector.rowsGiveDensity = false;
         return;
     }
     }

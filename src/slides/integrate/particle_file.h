@@ -10,8 +10,13 @@
 //   csv            anything else: comma- or space-separated, `#` starts a comment line, a
 //                  header naming its columns: x y z [m], u v w [m/s], d (diameter) or r (radius)
 //                  [m], and optionally t, the injection time after the injector's startTime [s]
-//                  (default 0; the rows must not go back in time), wx wy wz the spin [rad/s]
-//                  and T the temperature [K].
+//                  (default 0; the rows must not go back in time), wx wy wz the spin [rad/s],
+//                  T the temperature [K] and rho the density [kg/m³].
+// A file that gives densities (a CSV's rho) makes its rows particles
+// of their own species (ParticleSettings::species): the injector's material and specific heat
+// with each row's density, one species each distinct density; rows all of one density are one
+// species, and if it is the particles' own the run is as without the column. Such an injector
+// takes no `density` of its own (the file gives it).
 //
 //     injectors { ball { model file; file "constant/ball.csv"; } }
 //     injectors { target { model file; file "../nozzleRun/slides/particles.h5"; } }
@@ -30,7 +35,8 @@ namespace slides {
 ParticleFileFormat particleFileFormat(const std::filesystem::path& file);
 
 /// Reads the rows of a particle file of injector.file.format into injector (rows, rowsGiveSpin,
-/// rowsGiveTemperature); a bad file throws InputError naming file:line and column or key.
+/// rowsGiveTemperature, rowsGiveDensity); a bad file throws InputError naming file:line and column
+/// or key.
 void readParticleFile(const std::filesystem::path& file, InjectorSettings& injector);
 
 } // namespace slides

@@ -68,7 +68,10 @@ void ParticlesHdf5::writeFrame(double time, const ParticleFrame& frame) {
                                      frame.angularVelocity.has_value())});
 }
 
-void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {
+void ParticlesHdf5::finish(std::span<const Arrival> arrivals,
+                           std::optional<std::span<const double>> density) {
+    if (density && density->size() != arrivals.size())
+        throw std::invalid_argument("arrival densities differ in number from the arrivals");
     const Hdf5File& file = *file_;
     const Hdf5Handle group = file.createGroup("/arrivals");
     const std::size_t count = arrivals.size();
@@ -90,6 +93,7 @@ void ParticlesHdf5::finish(std::span<const Arrival> arrivals) {
     file.writeDataset(group.get(), "position", positions, "m");
     file.writeDataset(group.get(), "velocity", velocities, "m/s");
     file.writeDataset(group.get(), "diameter", diameters, 1, "m");
+    if (density) file.writeDataset(group.get(), "density", *density, 1, "kg/m^3");
     file.writeAttribute(file.root(), "frames", static_cast<std::int64_t>(frames_.size()));
     file_->close();
     file_.reset();

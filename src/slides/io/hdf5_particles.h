@@ -17,9 +17,12 @@
 //       angularVelocity float64 (N, 3) [rad/s], where the particles spin (scene.h tracksSpin)
 //       charge     float64 (N)    [C], with electromagnetic forces (physics/electromagnetic.h)
 //       injector   int32 (N)       index of the injector in `injectors {}`, with several
+//       density    float64 (N)     [kg/m³], where the particles differ (species of injectors or
+//                                  of a file's rows)
 //   /arrivals            written when the run ends, one row per particle that reached a
 //                        surface: id, surface (index into the case's surfaces), time [s],
-//                        position [m], velocity [m/s], diameter [m]
+//                        position [m], velocity [m/s], diameter [m], and density [kg/m³] where
+//                        the particles differ
 // Datasets are chunked, shuffled and deflate-compressed. During the run the file is
 // `particles.h5.partial`, flushed after every frame, so a run stopped early keeps its frames
 // under a name that says it is incomplete; finish() renames it to particles.h5 and then
@@ -49,8 +52,10 @@ public:
     ParticlesHdf5(const std::filesystem::path& directory, const std::string& caseName);
 
     void writeFrame(double time, const ParticleFrame& frame);
-    /// Writes /arrivals, closes the file, renames it to particles.h5, writes particles.xmf.
-    void finish(std::span<const Arrival> arrivals);
+    /// Writes /arrivals (with each one's density, if given), closes the file, renames it to
+    /// particles.h5, writes particles.xmf.
+    void finish(std::span<const Arrival> arrivals,
+                std::optional<std::span<const double>> density = std::nullopt);
 
     static constexpr const char* fileName = "particles.h5";
     static constexpr const char* indexName = "particles.xmf";

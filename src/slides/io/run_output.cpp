@@ -61,7 +61,7 @@ RunOutput::RunOutput(std::filesystem::path directory, const RunOutputSettings& s
       carrierResolution_(settings.output.carrierResolution), series_(directory_ / "particles.pvd"),
       fields_(settings.output.fields), heating_(settings.temperature), spinning_(settings.spin),
       electromagnetic_(settings.electromagnetic), injectorIds_(settings.injectorIds),
-      injectorDensities_(settings.injectorDensities) {
+      densityOf_(settings.densityOf) {
     if (resumed) {
         frames_ = *resumed;
         std::vector<std::pair<double, std::string>> series;
@@ -145,15 +145,22 @@ void RunOutput::attachInjectors(ParticleFrame& frame, std::vector<std::int32_t>&
     for (std::size_t i = 0; i < frame.id.size(); ++i)
         injectors[i] = injectorIds_.injectorOf(frame.id[i]);
     frame.injector = injectors;
-    if (injectorDensities_.empty()) return;
+    if (!densityOf_) return;
     densities.resize(frame.id.size());
-    for (std::size_t i = 0; i < frame.id.size(); ++i)
-        densities[i] = injectorDensities_[static_cast<std::size_t>(injectors[i])];
+    for (std::size_t i = 0; i < frame.id.size(); ++i) densities[i] = densityOf_(frame.id[i]);
     frame.density = densities;
 }
 
 void RunOutput::finish(const RunSnapshot& snapshot, const nlohmann::json& summary) {
-    if (hdf5_) hdf5_->finish(snapshot.arrivals);
+    if (hdf5_) {
+        std::vector<double> densities;
+        if (densityOf_)
+            for (const Arrival& arrival : snapshot.arrivals)
+                densities.push_back(densityOf_(arrival.id));
+        hdf5_->finish(snapshot.arrivals, densityOf_
+                                             ? std::optional<std::span<const double>>(densities)
+                                             : std::nullopt);
+    }
     writeTextAtomically(directory_ / "summary.json", summary.dump(2) + "\n");
 }
 

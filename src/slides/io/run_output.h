@@ -22,7 +22,9 @@
 #include "slides/io/run_snapshot.h"
 #include "slides/physics/electromagnetic.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -38,9 +40,9 @@ struct RunOutputSettings {
     ElectromagneticSettings electromagnetic;
     /// The particle ids of the injectors of `injectors {}`; none: no injector array.
     InjectorIds injectorIds;
-    /// The density of each injector's particles when they differ (a `density` point array);
-    /// empty when the particles are alike.
-    std::vector<double> injectorDensities;
+    /// The density of particle id [kg/m³] when the particles differ (a `density` array in the
+    /// frames and the arrivals); empty when they are alike.
+    std::function<double(std::uint64_t)> densityOf;
 };
 
 class RunOutput {
@@ -80,7 +82,7 @@ private:
     bool spinning_; ///< particles carry a spin ω
     ElectromagneticSettings electromagnetic_;
     InjectorIds injectorIds_;
-    std::vector<double> injectorDensities_;
+    std::function<double(std::uint64_t)> densityOf_;
 };
 
 } // namespace slides

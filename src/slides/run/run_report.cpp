@@ -42,13 +42,10 @@ void describeRun(const ResolvedScene& resolved, int threads) {
 
 namespace {
 
-/// Each injector's particles' density when they differ; empty when alike.
-std::vector<double> injectorDensities(const Scene& scene) {
-    std::vector<double> densities;
-    if (scene.particles.alike()) return densities;
-    for (const std::int32_t species : scene.particles.speciesOfInjector)
-        densities.push_back(scene.particles.species[static_cast<std::size_t>(species)].density);
-    return densities;
+/// Each particle's density by its id when the particles differ; empty when alike.
+std::function<double(std::uint64_t)> densityOf(const Scene& scene) {
+    if (scene.particles.alike()) return {};
+    return [particles = scene.particles](std::uint64_t id) { return particles.densityOf(id); };
 }
 
 } // namespace
@@ -60,7 +57,7 @@ RunOutputSettings runOutputSettings(const Scene& scene) {
             .spin = tracksSpin(scene),
             .electromagnetic = scene.physics.electromagnetic,
             .injectorIds = injectorIds(scene),
-            .injectorDensities = injectorDensities(scene)};
+            .densityOf = densityOf(scene)};
 }
 
 SummaryInputs summaryInputs(const Scene& scene, const SceneAnalysis* analysis) {
