@@ -7,10 +7,11 @@
 // closed form with the combined E* and m*; a checkpoint of two species restarts to the same
 // bits; the SIMD relaxation with per-particle densities matches the scalar reference lane by
 // lane; the models that do not take differing species refuse them at the injector's key. A file
-// injector's densities per row (a CSV's rho column): each row settles at its own Stokes law,
-// rows of the particles' own density run bit for bit as without the column, a checkpoint
-// restarts to the same bits, frames and arrivals carry each one's density, and bad values and
-// what they cannot go with are refused.
+// injector's densities per row (a CSV's rho column, a previous run's density): each row settles
+// at its own Stokes law, rows of the particles' own density run bit for bit as without the
+// column, a checkpoint restarts to the same bits, frames and arrivals carry each one's density,
+// a chained run takes them (from the arrivals or a frame), and bad values and what they cannot
+// go with are refused.
 #include "../support/case_runs.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
@@ -32,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -493,7 +495,7 @@ TEST(ParticleSpecies, ModelsThatDoNotTakeDifferingSpeciesRefuseThemAtTheInjector
     }
 }
 
-// ---- a file's densities: a CSV's rho column ----------------------------------------------------
+// ---- a file's densities: a CSV's rho column, a previous run's density ------------------------
 
 /// constant/rows.csv of scratch holding csv, and the file injector `rows` reading it (with the
 /// extra keys given).
@@ -618,6 +620,62 @@ TEST(ParticleSpecies, ArrivalsAndFramesCarryEachRowsDensity) {
         ASSERT_EQ(frameDensities[k], densityOf(frameIds[k])) << k;
     const auto summary = nlohmann::json::parse(test::slurp(output / "summary.json"));
     EXPECT_EQ(summary["settings"]["injectors"]["rows"]["species"], nlohmann::json({0, 1}));
+
+    // A run chained from these arrivals takes their densities: its row k is the k-th arrival in
+    // time (integrate/previous_run.h).
+    test::ScratchDirectory next("species-rows-output-chained");
+    const Scene chained =
+        sceneOf(next, sprayDictionary("injectors { fromA { model file; file \"" +
+                                      (output / "particles.h5").string() + "\"; } }\n"));
+    const auto times = h5.readDoubles("/arrivals/time", 1);
+    std::vector<std::size_t> order(ids.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return times[a] < times[b]; });
+    ASSERT_EQ(chained.particles.count, long(ids.size()));
+    ASSERT_EQ(chained.particles.species.size(), 2u);
+    for (std::size_t k = 0; k < ids.size(); ++k)
+        ASSERT_EQ(chained.particles.densityOf(k), densities[order[k]]) << k;
+}
+
+TEST(ParticleSpecies, ChainedRunTakesThePreviousRunsDensities) {
+    // A particles.h5 by the run's own writer: three particles of densities 1000, 8000 and 2000,
+    // the last arrived; the arrivals in the opposite order of time.
+    test::ScratchDirectory scratch("species-rows-chained");
+    const std::vector<std::uint64_t> ids{7, 8, 9};
+    const std::vector<Vec3> positions{{0.01, 0.001, 0}, {0.02, -0.002, 0}, {0.06, 0, 0}};
+    const std::vector<Vec3> velocities{{20, 0.5, 0}, {18, -1, 0}, {0, 0, 0}};
+    const std::vector<double> radii{40e-6, 50e-6, 60e-6}, densities{1000, 8000, 2000};
+    const std::vector<std::int32_t> states{0, 0, 1};
+    {
+        ParticlesHdf5 h5(scratch.path, "chained");
+        ParticleFrame frame{ids, positions, velocities, radii, states};
+        frame.density = densities;
+        h5.writeFrame(0.0, frame);
+        std::vector<Arrival> arrivals(3);
+        for (std::size_t k = 0; k < 3; ++k)
+            arrivals[k] = {ids[k],        0,       3e-3 - 1e-3 * double(k), positions[k],
+                           velocities[k], radii[k]};
+        h5.finish(arrivals, densities);
+    }
+    const auto file = scratch.path / ParticlesHdf5::fileName;
+    const auto chained = [&](const std::string& coeffs) {
+        return sceneOf(scratch, sprayDictionary("injectors { fromA { model file; file \"" +
+                                                file.string() + "\"; " + coeffs + " } }\n"));
+    };
+    // Its arrivals, in order of arrival time: 2000, 8000, 1000.
+    const Scene fromArrivals = chained("");
+    ASSERT_EQ(fromArrivals.particles.count, 3);
+    ASSERT_EQ(fromArrivals.particles.species.size(), 3u);
+    EXPECT_EQ(fromArrivals.particles.densityOf(0), 2000);
+    EXPECT_EQ(fromArrivals.particles.densityOf(1), 8000);
+    EXPECT_EQ(fromArrivals.particles.densityOf(2), 1000);
+    // Its frame's particles in flight: 1000, 8000.
+    const Scene fromFrame = chained("fileCoeffs { source frame; time 0; }");
+    ASSERT_EQ(fromFrame.particles.count, 2);
+    ASSERT_EQ(fromFrame.particles.species.size(), 2u);
+    EXPECT_EQ(fromFrame.particles.densityOf(0), 1000);
+    EXPECT_EQ(fromFrame.particles.densityOf(1), 8000);
 }
 
 TEST(ParticleSpecies, BadRowDensitiesAndWhatTheyCannotGoWithAreRefused) {

@@ -292,7 +292,7 @@ struct InjectorSettings {
     std::vector<ParticleRow> rows;    ///< model file: the particles, in order of injection time
     bool rowsGiveSpin = false;        ///< the file has wx wy wz
     bool rowsGiveTemperature = false; ///< the file has T
-    bool rowsGiveDensity = false;     ///< the file has rho (a CSV)
+    bool rowsGiveDensity = false;     ///< the file has rho (a CSV) or density (a particles.h5)
     EnsembleSettings ensemble;        ///< model ensemble: the packing its rows come from
     /// What its particles are made of: the particles' own, with what the injector gives instead
     /// (with rowsGiveDensity, its first row's density).

@@ -12,7 +12,7 @@
 //                  [m], and optionally t, the injection time after the injector's startTime [s]
 //                  (default 0; the rows must not go back in time), wx wy wz the spin [rad/s],
 //                  T the temperature [K] and rho the density [kg/m³].
-// A file that gives densities (a CSV's rho) makes its rows particles
+// A file that gives densities (a CSV's rho, a particles.h5's density) makes its rows particles
 // of their own species (ParticleSettings::species): the injector's material and specific heat
 // with each row's density, one species each distinct density; rows all of one density are one
 // species, and if it is the particles' own the run is as without the column. Such an injector

@@ -35,9 +35,10 @@ void requireRows(const std::filesystem::path& path, const std::string& group, st
             throw InputError(path.string(), 0, group, "datasets of different lengths");
 }
 
-/// The arrivals of a previous run's particles.h5, in order of arrival.
-std::vector<ParticleRow> readArrivals(const std::filesystem::path& path) {
-    std::vector<double> positions, velocities, diameters, times;
+/// The arrivals of a previous run's particles.h5, in order of arrival, with their densities
+/// where the run wrote them (its particles differed).
+void readArrivals(const std::filesystem::path& path, InjectorSettings& injector) {
+    std::vector<double> positions, velocities, diameters, times, densities;
     readOrRefuse(path, "/arrivals", [&](const Hdf5File& file) {
         if (!file.exists("/arrivals"))
             throw InputError(path.string(), 0, "/arrivals", "no arrivals: the run did not finish");
@@ -45,27 +46,32 @@ std::vector<ParticleRow> readArrivals(const std::filesystem::path& path) {
         velocities = file.readDoubles("/arrivals/velocity", 3);
         diameters = file.readDoubles("/arrivals/diameter", 1);
         times = file.readDoubles("/arrivals/time", 1);
+        if (file.exists("/arrivals/density")) densities = file.readDoubles("/arrivals/density", 1);
     });
     const std::size_t count = diameters.size();
+    injector.rowsGiveSpin = injector.rowsGiveTemperature = false;
+    injector.rowsGiveDensity = !densities.empty();
     requireRows(path, "/arrivals", count,
-                {positions.size() / 3, velocities.size() / 3, times.size()});
+                {positions.size() / 3, velocities.size() / 3, times.size(),
+                 injector.rowsGiveDensity ? densities.size() : count});
     if (count == 0) throw InputError(path.string(), 0, "/arrivals", "no particle arrived");
-    std::vector<ParticleRow> rows(count);
+    std::vector<ParticleRow>& rows = injector.rows;
+    rows.assign(count, ParticleRow{});
     for (std::size_t i = 0; i < count; ++i) {
         rows[i].position = Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
         rows[i].velocity = Vec3(velocities[3 * i], velocities[3 * i + 1], velocities[3 * i + 2]);
         rows[i].radius = 0.5 * diameters[i];
         rows[i].time = times[i];
+        if (injector.rowsGiveDensity) rows[i].density = densities[i];
     }
     std::stable_sort(rows.begin(), rows.end(),
                      [](const ParticleRow& a, const ParticleRow& b) { return a.time < b.time; });
-    return rows;
 }
 
 /// The particles in flight in frame index, all at time 0 after the injector's start.
 void readFrame(const std::filesystem::path& path, std::size_t index, InjectorSettings& injector) {
     const std::string group = particlesFrameGroup(index);
-    std::vector<double> positions, velocities, diameters, spins, temperatures;
+    std::vector<double> positions, velocities, diameters, spins, temperatures, densities;
     std::vector<std::int32_t> states;
     double time = 0;
     readOrRefuse(path, group, [&](const Hdf5File& file) {
@@ -86,14 +92,17 @@ void readFrame(const std::filesystem::path& path, std::size_t index, InjectorSet
             spins = file.readDoubles(group + "/angularVelocity", 3);
         if (file.exists(group + "/temperature"))
             temperatures = file.readDoubles(group + "/temperature", 1);
+        if (file.exists(group + "/density")) densities = file.readDoubles(group + "/density", 1);
     });
     const std::size_t count = diameters.size();
     injector.rowsGiveSpin = !spins.empty();
     injector.rowsGiveTemperature = !temperatures.empty();
+    injector.rowsGiveDensity = !densities.empty();
     requireRows(path, group, count,
                 {positions.size() / 3, velocities.size() / 3, states.size(),
                  injector.rowsGiveSpin ? spins.size() / 3 : count,
-                 injector.rowsGiveTemperature ? temperatures.size() : count});
+                 injector.rowsGiveTemperature ? temperatures.size() : count,
+                 injector.rowsGiveDensity ? densities.size() : count});
     std::vector<ParticleRow>& rows = injector.rows;
     rows.clear();
     for (std::size_t i = 0; i < count; ++i) {
@@ -105,6 +114,7 @@ void readFrame(const std::filesystem::path& path, std::size_t index, InjectorSet
         if (injector.rowsGiveSpin)
             row.angularVelocity = Vec3(spins[3 * i], spins[3 * i + 1], spins[3 * i + 2]);
         if (injector.rowsGiveTemperature) row.temperature = temperatures[i];
+        if (injector.rowsGiveDensity) row.density = densities[i];
         rows.push_back(row);
     }
     if (rows.empty()) {
@@ -158,8 +168,7 @@ void readPreviousRun(const std::filesystem::path& file, InjectorSettings& inject
         readFrame(file, injector.file.frame, injector);
         return;
     }
-    injector.rows = readArrivals(file);
-    injector.rowsGiveSpin = injector.rowsGiveTemperature = false;
+    readArrivals(file, injector);
 }
 
 } // namespace slides

@@ -6,6 +6,9 @@
 //             position, velocity and diameter, and their spin and temperature where the frame
 //             holds them and the new run keeps them, all at the injector's startTime: run A to
 //             T, then run B from A's frame at T, continues A's particles.
+// Where the previous run's particles differed in density (a `density` dataset in the frame or
+// the arrivals), each row keeps its particle's density (integrate/particle_file.h: a species
+// per distinct density); else the rows take the injector's.
 // The frame at `time` is the one whose time agrees with it to 1e-6 of |time| (the frame at 0 is
 // at 0 exactly), so `2e-3` finds the frame the run wrote at 0.0020000000000000005 s.
 //
@@ -37,8 +40,9 @@ std::optional<std::size_t> frameAtTime(std::span<const double> times, double tim
 /// For messages: "0 0.0005 0.001 s", the first and last few of many with "…" between.
 std::string listFrameTimes(std::span<const double> times);
 
-/// Reads the rows (and rowsGiveSpin, rowsGiveTemperature) that injector.file.source names; a
-/// file without them throws InputError naming the file and the dataset.
+/// Reads the rows (and rowsGiveSpin, rowsGiveTemperature, rowsGiveDensity) that
+/// injector.file.source names; a file without them throws InputError naming the file and the
+/// dataset.
 void readPreviousRun(const std::filesystem::path& file, InjectorSettings& injector);
 
 } // namespace slides
