@@ -719,6 +719,9 @@ TEST(ParticleSpecies, BadRowDensitiesAndWhatTheyCannotGoWithAreRefused) {
                             "mode allAtStart; } }\n";
     EXPECT_EQ(refusal(header + "0 0 0 1 1 1 1e-4 8000\n", gun + adaptive), refused);
     EXPECT_EQ(refusal(header + "0 0 0 1 1 1 1e-4 5680\n", gun + adaptive), "accepted");
+    // The Maxey–Riley terms take each particle's density, a row's as an injector's.
+    EXPECT_EQ(refusal(twoDensities, "physics { addedMass on; pressureGradient on; }\n"),
+              "accepted");
     // Terms left to auto stay off, saying why.
     const Scene scene = sceneOf(scratch, sprayDictionary(rowsInjector(scratch, twoDensities)) +
                                              "particles { specificHeat 460; }\n");
