@@ -565,7 +565,8 @@ SceneAnalysis analyseScene(const Scene& given, const CarrierField& carrier) {
     // Differing species: the pilot particles fly as their own, and the estimates are those of
     // the lightest species, whose response time at each radius is the shortest (τ ∝ ρp) and
     // whose unsteady terms, relative to the drag, the largest (added mass, pressure gradient,
-    // lift and history grow with ρf/ρp, Eq. 3.3).
+    // lift and history grow with ρf/ρp, Eq. 3.3); heating as the species whose thermal response
+    // time is the shortest (τ_θ ∝ ρp c_p).
     Scene lightest;
     if (!given.particles.alike()) {
         lightest = given;
@@ -573,9 +574,13 @@ SceneAnalysis analyseScene(const Scene& given, const CarrierField& carrier) {
         const ParticleSpecies& light =
             *std::min_element(species.begin(), species.end(),
                               [](const auto& a, const auto& b) { return a.density < b.density; });
+        const ParticleSpecies& quickest =
+            *std::min_element(species.begin(), species.end(), [](const auto& a, const auto& b) {
+                return a.density * a.specificHeat < b.density * b.specificHeat;
+            });
         lightest.particles.density = light.density;
         lightest.particles.material = light.material;
-        lightest.particles.specificHeat = light.specificHeat;
+        lightest.particles.specificHeat = quickest.density * quickest.specificHeat / light.density;
     }
     const Scene& scene = given.particles.alike() ? given : lightest;
     SceneAnalysis analysis;

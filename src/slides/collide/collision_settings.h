@@ -116,13 +116,12 @@ inline SoftContactLaw softContactLawOf(const CollisionSettings& collisions) {
     return law;
 }
 
-/// Temperature rise [K] of bodies of total heat capacity c Σm sharing the kinetic energy a
-/// contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).
+/// Temperature rise [K] of bodies of total heat capacity Σ c m [J/K] sharing the kinetic energy
+/// a contact dissipated (Eq. 2.115–2.117: all dissipated work becomes heat, ΔH = Δ(KE)).
 /// A pair shares it by heat capacity, so both warm alike; a rigid wall or the static deposit
 /// takes none.
-inline double collisionalTemperatureRise(double dissipatedEnergy, double specificHeat,
-                                         double heatedMass) {
-    return dissipatedEnergy / (specificHeat * heatedMass);
+inline double collisionalTemperatureRise(double dissipatedEnergy, double heatCapacity) {
+    return dissipatedEnergy / heatCapacity;
 }
 
 /// Whether a surface of this interaction meets particles by soft-sphere forces (a rebound wall

@@ -78,15 +78,17 @@ double CoulombForces::potentialEnergy() const {
     return energy;
 }
 
-void CoulombForces::halfKick(ParticleCloud& cloud, const std::vector<double>& stepLengths) const {
+void CoulombForces::halfKick(ParticleCloud& cloud, const std::vector<double>& stepLengths,
+                             std::span<const double> densities) const {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         // A particle without force keeps its velocity as it is (a zero kick could turn −0 to +0).
         if (forces_[i].isZero(0)) continue;
+        const double density = densities.empty() ? particleDensity_ : densities[i];
         cloud.velocity[i] +=
-            forces_[i] * (0.5 * stepLengths[i] / sphereMass(cloud.radius[i], particleDensity_));
+            forces_[i] * (0.5 * stepLengths[i] / sphereMass(cloud.radius[i], density));
     }
 }
 

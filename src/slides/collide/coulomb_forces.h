@@ -20,6 +20,7 @@
 #include "slides/physics/coulomb.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace slides {
@@ -39,8 +40,10 @@ public:
     /// The pairs' potential energy of the last evaluation [J] (the sum of U over the pairs).
     double potentialEnergy() const;
 
-    /// Advances every particle's velocity by its force over half its step.
-    void halfKick(ParticleCloud& cloud, const std::vector<double>& stepLengths) const;
+    /// Advances every particle's velocity by its force over half its step; densities: each
+    /// particle's own ρp where species differ (integrate/species_values.h), else empty.
+    void halfKick(ParticleCloud& cloud, const std::vector<double>& stepLengths,
+                  std::span<const double> densities) const;
 
 private:
     /// A pair closer than the cut-off: its particles (cloud indices) and the force on the first.

@@ -74,8 +74,8 @@ void ParticleCollisions::collide(ParticleCloud& cloud, const std::vector<Vec3>& 
         applyImpulse(bodyA, bodyB, normal, impulse);
         if (heats) {
             const double dissipated = energyBefore - kineticEnergy(bodyA) - kineticEnergy(bodyB);
-            const double rise =
-                collisionalTemperatureRise(dissipated, particles_.specificHeat, massA + massB);
+            const double rise = collisionalTemperatureRise(
+                dissipated, particles_.pairHeatCapacity(cloud.id[a], massA, cloud.id[b], massB));
             cloud.temperature[a] += rise;
             cloud.temperature[b] += rise;
         }

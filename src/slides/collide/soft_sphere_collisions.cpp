@@ -286,13 +286,15 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
             torque += second ? load.torqueOnSecond : load.torqueOnFirst;
             if (conducts) // the pair's two flows are equal and opposite
                 heat += (second ? -load.conductedPower : load.conductedPower) * dt /
-                        (massOf(i) * particles_.specificHeat);
+                        (massOf(i) * particles_.specificHeatOf(cloud.id[i]));
             if (heats && load.dissipatedPower > 0) {
-                const double masses =
-                    massOf(entry.first) +
-                    (entry.second >= 0 ? massOf(static_cast<std::size_t>(entry.second)) : 0.0);
-                heat += collisionalTemperatureRise(load.dissipatedPower * dt,
-                                                   particles_.specificHeat, masses);
+                // A wall's side (second < 0) takes none: the first's heat capacity alone.
+                const bool pair = entry.second >= 0;
+                const auto other = pair ? static_cast<std::size_t>(entry.second) : entry.first;
+                heat += collisionalTemperatureRise(
+                    load.dissipatedPower * dt,
+                    particles_.pairHeatCapacity(cloud.id[entry.first], massOf(entry.first),
+                                                cloud.id[other], pair ? massOf(other) : 0.0));
             }
         }
         cloud.contactForce[i] = force;

@@ -289,8 +289,8 @@ std::vector<KeyDeclaration> declareKeys() {
         {"injectors.*.startTime", K::scalar, "s", "0", {}, R::nonNegative,
          "When it starts; a file's row times are added to it."},
         {"injectors.*.density", K::scalar, "kg/m^3", "-", {}, R::positive,
-         "Density ρp of this injector's particles; default particles.density. Differing "
-         "densities are refused by the models that do not take them yet (README).",
+         "Density ρp of this injector's particles; default particles.density. Every model "
+         "takes each particle's own (README).",
          noMinimum, 1e5},
         {"injectors.*.material", K::dictionary, "-", "-", {}, R::any,
          "This injector's particles' material; a property not given is particles.material's."},

@@ -629,31 +629,10 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
     return material;
 }
 
-/// The key of `property` ("density", "specificHeat", "material") that makes the particles
-/// differ in it: that of the first injector with a particle differing from the first one, if it
-/// gives it, else the first injector's. Densities a file's rows give are its `file` key's.
-std::string differingKey(const KeyReader& keys, const Scene& scene, const std::string& property,
-                         bool (*same)(const ParticleSpecies&, const ParticleSpecies&)) {
-    const auto& injectors = scene.injectors;
-    const ParticleSettings& particles = scene.particles;
-    const auto keyOf = [&](const InjectorSettings& injector) {
-        const bool fromRows = property == "density" && injector.rowsGiveDensity;
-        return "injectors." + injector.name + "." + (fromRows ? "file" : property);
-    };
-    for (std::size_t j = 0; j < injectors.size(); ++j)
-        for (const std::int32_t species : particles.speciesOfParticles(j))
-            if (!same(particles.species[static_cast<std::size_t>(species)],
-                      particles.species.front())) {
-                const std::string key = keyOf(injectors[j]);
-                return keys.has(key) ? key : keyOf(injectors.front());
-            }
-    return {};
-}
-
 /// The particle species of the injectors (`injectors.NAME.density`, `.material {}`,
 /// `.specificHeat`, each defaulting to the particles' own; a file's densities per row,
-/// integrate/particle_file.h), and the refusal of the models that do not take differing species
-/// yet. Injectors all alike leave the particles one species, theirs.
+/// integrate/particle_file.h); every model takes each particle's own. Injectors all alike leave
+/// the particles one species, theirs.
 void readSpecies(const KeyReader& keys, Scene& scene) {
     ParticleSettings& particles = scene.particles;
     if (scene.injectors.empty()) return;
@@ -702,44 +681,6 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
     if (std::any_of(ofRow.begin(), ofRow.end(), [](const auto& rows) { return !rows.empty(); }))
         particles.speciesOfRow = std::move(ofRow);
     particles.injectorIds = injectorIdsOf(scene.injectors);
-
-    const std::string density =
-        differingKey(keys, scene, "density",
-                     [](const auto& a, const auto& b) { return a.density == b.density; });
-    const std::string specificHeat =
-        differingKey(keys, scene, "specificHeat",
-                     [](const auto& a, const auto& b) { return a.specificHeat == b.specificHeat; });
-    PhysicsSettings& physics = scene.physics;
-    const auto refuse = [&](const std::string& key, const std::string& what,
-                            const std::string& model) {
-        keys.fail(key, "differing " + what + " are not supported with " + model +
-                           " yet: give every injector the same, or set it off");
-    };
-    // Terms left to auto stay off; each term set on is refused.
-    const auto leaveOff = [&](std::initializer_list<PhysicsTerm> terms, const std::string& why) {
-        for (AutomaticTerm& automatic : physics.automaticTerms)
-            if (automatic.unavailable.empty() &&
-                std::find(terms.begin(), terms.end(), automatic.term) != terms.end())
-                automatic.unavailable = why;
-    };
-    if (!density.empty()) {
-        const std::string why = "not with differing particle densities (" + density + ") yet";
-        if (physics.dispersion != DispersionModel::none)
-            refuse(density, "densities", "physics.dispersion.model");
-        if (physics.heatTransfer != HeatTransferModel::none)
-            refuse(density, "densities", "physics.heatTransfer.model");
-        if (physics.electromagnetic.on())
-            refuse(density, "densities", "physics.electromagnetic.model");
-        if (scene.time.integrator == Integrator::adaptiveRungeKutta)
-            refuse(density, "densities", "time.integrator adaptiveRungeKutta");
-        leaveOff({PhysicsTerm::dispersion, PhysicsTerm::heatTransfer}, why);
-    }
-    if (!specificHeat.empty()) {
-        if (physics.heatTransfer != HeatTransferModel::none)
-            refuse(specificHeat, "specific heats", "physics.heatTransfer.model");
-        leaveOff({PhysicsTerm::heatTransfer},
-                 "not with differing specific heats (" + specificHeat + ") yet");
-    }
 }
 
 /// The porous layer of an erode surface (Section 5.2): a plane whose material gives the moduli.

@@ -21,6 +21,7 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
         bool knowsFirstSlope;  ///< k₁ at the state: from the last sub-step's k₇, or a rejection
     };
     const auto& h = batch.stepLength;
+    const bool species = !batch.density.empty();
     std::vector<Particle> active;
     for (std::size_t i = 0; i < batch.position.size(); ++i) {
         if (!(h[i] > 0)) continue;
@@ -59,9 +60,14 @@ AdaptiveSteps advanceAdaptiveBatch(const AdaptiveBatch& batch, double time, doub
                 p.location = locations[m];
                 if (!batch.eddyVelocity.empty()) gas.velocity[m] += batch.eddyVelocity[p.index];
                 const Vec3 v = stages[m].tail<3>();
-                const double tau =
-                    dragResponseTime(drag, batch.radius[p.index], (gas.velocity[m] - v).norm());
-                Vec3 acceleration = particleAcceleration(gas.velocity[m], v, tau, bodyAcceleration);
+                const double slip = (gas.velocity[m] - v).norm();
+                const double tau = species
+                                       ? dragResponseTime(drag.withDensity(batch.density[p.index]),
+                                                          batch.radius[p.index], slip)
+                                       : dragResponseTime(drag, batch.radius[p.index], slip);
+                Vec3 acceleration =
+                    particleAcceleration(gas.velocity[m], v, tau,
+                                         species ? batch.acceleration[p.index] : bodyAcceleration);
                 if (!batch.lorentz.empty()) {
                     const LorentzRates& rates = batch.lorentz[p.index];
                     acceleration += rates.electricAcceleration + v.cross(rates.gyration);

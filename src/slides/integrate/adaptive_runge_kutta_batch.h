@@ -8,7 +8,8 @@
 //
 // Reference: Section 4.2.3, Eq. 4.18–4.29, Algorithm 2. dv/dt = (u(x) + u' − v)/τ + a
 // (integrate/integrator.h particleAcceleration) with τ the drag response time of physics/drag.h
-// at the stage's slip and u' a particle's eddy fluctuation, held over the global step
+// at the stage's slip (of the particle's own density, and a its own, where species differ) and u'
+// a particle's eddy fluctuation, held over the global step
 // (integrate/turbulent_dispersion.h); on a charged particle the Lorentz force of Eq. 2.93 adds
 // qE/m + v × qB/m (physics/electromagnetic.h). The carrier is sampled at one time for the whole
 // batch (the stepper takes the global step's middle): exact for a carrier frozen over the step.
@@ -39,6 +40,11 @@ struct AdaptiveBatch {
     std::span<double> trialStep = {};
     std::span<const Vec3> eddyVelocity = {};    ///< u' [m/s]; empty: none
     std::span<const LorentzRates> lorentz = {}; ///< qE/m and qB/m; empty: no charges
+    /// Particles of differing species (integrate/injection_settings.h): each one's density ρp
+    /// [kg/m³] and body acceleration a_i [m/s²] in place of the drag's ρp and the common a;
+    /// empty when the particles are alike.
+    std::span<const double> density = {};
+    std::span<const Vec3> acceleration = {};
     /// The carrier's cells, if it keeps them: in, at x; out, at the end of the step.
     std::span<std::int32_t> locations = {};
 };

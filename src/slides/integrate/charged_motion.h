@@ -8,7 +8,9 @@
 // midpoint, where the gas is sampled; the whole step then takes the flow from the start with the
 // midpoint's gas and τ (from the slip at the predicted midpoint). Second order for a gas that
 // varies along the path; exact in uniform gas under Stokes drag and without gas (the Larmor
-// gyration, the E × B drift). With no gas the flow has no drag (λ = 0).
+// gyration, the E × B drift). With no gas the flow has no drag (λ = 0). Where species differ,
+// each particle's own ρp sets its mass m = 4/3 π R³ ρp (so q/m) and its τ, and its own body
+// acceleration joins qE/m.
 //
 //     physics { electromagnetic { model lorentz; E (0 0 1e5); B (0 0 0.5);
 //                                 charge { model fixed; value 1e-12; } } }
@@ -16,6 +18,7 @@
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/core/particle_cloud.h"
+#include "slides/integrate/species_values.h"
 #include "slides/physics/drag.h"
 #include "slides/physics/electromagnetic.h"
 
@@ -37,20 +40,31 @@ public:
         std::function<void(const std::vector<Vec3>& points, CarrierSample& out)>;
 
     /// Advances every particle i over stepLengths[i] through gas whose velocity at the step's
-    /// start is gasStart.velocity[i].
+    /// start is gasStart.velocity[i]; species: the particles' own ρp and a, if they differ.
     void advance(ParticleCloud& cloud, const CarrierSample& gasStart,
-                 const MidpointSampler& sampleMidpoint, const std::vector<double>& stepLengths);
+                 const MidpointSampler& sampleMidpoint, const std::vector<double>& stepLengths,
+                 const SpeciesValues& species);
 
     /// Advances every particle i over stepLengths[i] without gas (no drag).
-    void fly(ParticleCloud& cloud, const std::vector<double>& stepLengths) const;
+    void fly(ParticleCloud& cloud, const std::vector<double>& stepLengths,
+             const SpeciesValues& species) const;
 
     /// Particle i's qE/m and qB/m (for adaptiveRungeKutta, which takes them in its own steps).
-    LorentzRates ratesOf(const ParticleCloud& cloud, std::size_t i) const;
+    LorentzRates ratesOf(const ParticleCloud& cloud, std::size_t i,
+                         const SpeciesValues& species) const;
 
 private:
     ElectromagneticSettings fields_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;
+    /// Particle i's drag, of its own density where species differ.
+    DragParameters dragOf(std::size_t i, const SpeciesValues& species) const {
+        return species.alike() ? drag_ : drag_.withDensity(species.density[i]);
+    }
+    /// Particle i's body acceleration.
+    const Vec3& accelerationOf(std::size_t i, const SpeciesValues& species) const {
+        return species.alike() ? bodyAcceleration_ : species.acceleration[i];
+    }
     std::vector<Vec3> midpoints_, midpointVelocities_;
     CarrierSample gasMidpoint_;
 };

@@ -38,8 +38,9 @@ struct EddyVector {
         using V = hn::Vec<decltype(d)>;
         constexpr std::size_t lanes = maxDoubleLanes;
         // The lanes' inputs, gathered (the eddy states are records, not arrays).
-        alignas(64) std::array<double, lanes> k, epsilon, radius, h, timeLeft, lengthLeft;
-        alignas(64) std::array<double, 3 * lanes> v, u, xi;
+        alignas(64) std::array<double, lanes> k, epsilon, radius, h, timeLeft, lengthLeft, density;
+        alignas(64) std::array<double, 3 * lanes> v, u, xi, acceleration;
+        const bool species = !batch.density.empty();
         for (std::size_t lane = 0; lane < hn::Lanes(d); ++lane) {
             const std::size_t i = first + (lane < count ? lane : 0);
             const EddyState& eddy = batch.eddy[i];
@@ -49,10 +50,12 @@ struct EddyVector {
             h[lane] = batch.stepLength[i];
             timeLeft[lane] = eddy.timeLeft;
             lengthLeft[lane] = eddy.lengthLeft;
+            density[lane] = species ? batch.density[i] : 0.0;
             for (int c = 0; c < 3; ++c) {
                 v[3 * lane + c] = batch.velocity[i][c];
                 u[3 * lane + c] = batch.gas[i][c];
                 xi[3 * lane + c] = eddy.standardised[c];
+                acceleration[3 * lane + c] = species ? batch.acceleration[i][c] : 0.0;
             }
         }
         const V kV = hn::Load(d, k.data()), epsilonV = hn::Load(d, epsilon.data());
@@ -76,14 +79,18 @@ struct EddyVector {
         const V sigma = hn::Sqrt(hn::Div(hn::Mul(hn::Set(d, 2.0), kV), hn::Set(d, 3.0)));
         const V s0 = hn::Sub(v0, u0), s1 = hn::Sub(v1, u1), s2 = hn::Sub(v2, u2);
         const V slip = hn::Sqrt(hn::MulAdd(s0, s0, hn::MulAdd(s1, s1, hn::Mul(s2, s2))));
-        const V tau = ResponseTime(d, drag, hn::Load(d, radius.data()), slip);
+        const V radiusV = hn::Load(d, radius.data());
+        const V tau = species ? ResponseTime(d, drag, radiusV, slip, hn::Load(d, density.data()))
+                              : ResponseTime(d, drag, radiusV, slip);
         const V reach = hn::Mul(hn::Neg(tau), hn::Expm1(d, hn::Neg(hn::Div(hV, tau))));
-        const auto path = [&](V s, V xiC, double acceleration) {
-            const V drift = hn::Mul(tau, hn::Set(d, acceleration));
+        const auto path = [&](V s, V xiC, V acceleration) {
+            const V drift = hn::Mul(tau, acceleration);
             const V relative = hn::Sub(s, hn::Mul(sigma, xiC));
             return hn::MulAdd(hn::Sub(relative, drift), reach, hn::Mul(drift, hV));
         };
-        const V p0 = path(s0, xi0, a.x()), p1 = path(s1, xi1, a.y()), p2 = path(s2, xi2, a.z());
+        V a0 = hn::Set(d, a.x()), a1 = hn::Set(d, a.y()), a2 = hn::Set(d, a.z());
+        if (species) hn::LoadInterleaved3(d, acceleration.data(), a0, a1, a2);
+        const V p0 = path(s0, xi0, a0), p1 = path(s1, xi1, a1), p2 = path(s2, xi2, a2);
         const V travelled = hn::Sqrt(hn::MulAdd(p0, p0, hn::MulAdd(p1, p1, hn::Mul(p2, p2))));
         inEddy = hn::And(inEddy, hn::Lt(travelled, lengthV));
         // ū' = (σ/h) ∫σξ dt / σ = (σ/h) ξh, as the scalar step sums it.
@@ -132,7 +139,10 @@ HWY_EXPORT(EddyInteractionBatch);
 Vec3 eddyStepOf(const EddyBatch& batch, std::size_t i, const DispersionConstants& constants,
                 const DragParameters& drag, const Vec3& a, std::uint64_t seed) {
     const Vec3 slip = batch.velocity[i] - batch.gas[i];
-    const ParticleResponse particle{slip, dragResponseTime(drag, batch.radius[i], slip.norm()), a};
+    const bool species = !batch.density.empty();
+    const double tau = dragResponseTime(species ? drag.withDensity(batch.density[i]) : drag,
+                                        batch.radius[i], slip.norm());
+    const ParticleResponse particle{slip, tau, species ? batch.acceleration[i] : a};
     return eddyInteractionStep(batch.eddy[i], constants, batch.turbulentKineticEnergy[i],
                                batch.dissipationRate[i], particle, batch.stepLength[i],
                                RandomKey{seed, batch.id[i]});

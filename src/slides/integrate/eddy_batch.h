@@ -35,10 +35,16 @@ struct EddyBatch {
     std::span<const double> radius;                 ///< [m]
     std::span<const double> stepLength;             ///< h_i [s]
     std::span<Vec3> fluctuation;                    ///< ū' over the step (result) [m/s]
+    /// Particles of differing species (integrate/injection_settings.h): each one's density ρp
+    /// [kg/m³] and body acceleration a_i [m/s²] in place of the drag's ρp and the common a;
+    /// empty when the particles are alike.
+    std::span<const double> density = {};
+    std::span<const Vec3> acceleration = {};
 };
 
-/// eddyInteractionStep of every particle i, with τ(R_i, |v_i − U_i|) and the body acceleration,
-/// in parallel (OpenMP) when the batch is large; seed: injection.seed.
+/// eddyInteractionStep of every particle i, with τ(R_i, |v_i − U_i|) and the body acceleration
+/// (ρp,i and a_i where the batch gives them), in parallel (OpenMP) when the batch is large;
+/// seed: injection.seed.
 void eddyInteractionBatch(const EddyBatch& batch, const DispersionConstants& constants,
                           const DragParameters& drag, const Vec3& bodyAcceleration,
                           std::uint64_t seed);

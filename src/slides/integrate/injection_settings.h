@@ -158,6 +158,16 @@ struct ParticleSettings {
     double densityOf(std::uint64_t id) const {
         return alike() ? density : species[static_cast<std::size_t>(speciesOf(id))].density;
     }
+    double specificHeatOf(std::uint64_t id) const {
+        return alike() ? specificHeat
+                       : species[static_cast<std::size_t>(speciesOf(id))].specificHeat;
+    }
+    /// The heat capacity c_a m_a + c_b m_b [J/K] of particles a and b of masses m_a, m_b (as
+    /// c (m_a + m_b) when alike), which a contact's dissipated energy warms alike (Eq. 2.117).
+    double pairHeatCapacity(std::uint64_t a, double massA, std::uint64_t b, double massB) const {
+        return alike() ? specificHeat * (massA + massB)
+                       : specificHeatOf(a) * massA + specificHeatOf(b) * massB;
+    }
     const MaterialSettings& materialOf(std::uint64_t id) const {
         return alike() ? material : species[static_cast<std::size_t>(speciesOf(id))].material;
     }

@@ -27,17 +27,21 @@ std::size_t ParticleHeating::stateWidth() const {
 
 void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
                               const std::vector<Vec3>& startVelocities,
-                              const std::vector<double>& stepLengths) const {
+                              const std::vector<double>& stepLengths,
+                              const SpeciesValues& species) const {
     if (!on()) return;
     cloud.temperature.resize(cloud.size(), injectionTemperature_); // new particles
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
+    const bool own = !species.specificHeat.empty();
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         const double radius = cloud.radius[i];
+        const double density = own ? species.density[i] : particleDensity_;
+        const double specificHeat = own ? species.specificHeat[i] : particleSpecificHeat_;
         if (memory_) {
             const MichaelidesFengRates rates =
-                michaelidesFengRates(particleDensity_, particleSpecificHeat_, radius, fluidDensity_,
+                michaelidesFengRates(density, specificHeat, radius, fluidDensity_,
                                      fluidSpecificHeat_, thermalConductivity_);
             double* state = cloud.modelState.data() + i * cloud.stateWidth + stateOffset_;
             cloud.temperature[i] = advanceMichaelidesFeng(
@@ -47,7 +51,7 @@ void ParticleHeating::advance(ParticleCloud& cloud, const CarrierSample& gas,
         const double reynolds = particleReynolds((gas.velocity[i] - startVelocities[i]).norm(),
                                                  radius, kinematicViscosity_);
         const double responseTime =
-            thermalResponseTime(particleDensity_, particleSpecificHeat_, radius,
+            thermalResponseTime(density, specificHeat, radius,
                                 nusseltNumber(model_, reynolds, prandtl_), thermalConductivity_);
         cloud.temperature[i] = relaxTemperature(cloud.temperature[i], gas.temperature[i],
                                                 responseTime, stepLengths[i]);

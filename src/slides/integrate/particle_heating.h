@@ -9,13 +9,16 @@
 //
 // Re = 2R |u − v|/ν uses the gas velocity the particle saw (with the turbulent fluctuation) and
 // its velocity at the step start; T_gas is the carrier's temperature at the step-start
-// position. Newly injected particles start at particles.injectionTemperature.
+// position. Newly injected particles start at particles.injectionTemperature. Where species
+// differ (integrate/injection_settings.h), each particle's own ρp and c_p set its τ_θ (and the
+// rates of michaelidesFeng).
 #pragma once
 
 #include "slides/carrier/carrier_field.h"
 #include "slides/carrier/carrier_settings.h"
 #include "slides/core/particle_cloud.h"
 #include "slides/integrate/injection_settings.h"
+#include "slides/integrate/species_values.h"
 #include "slides/integrate/time_settings.h"
 #include "slides/physics/heat_transfer.h"
 #include "slides/physics/michaelides_feng.h"
@@ -40,10 +43,11 @@ public:
     void placeState(std::size_t offset) { stateOffset_ = offset; }
 
     /// Advances every particle's temperature over stepLengths[i]; gas holds U (as seen) and T
-    /// at the step-start positions, startVelocities the particle velocities there.
+    /// at the step-start positions, startVelocities the particle velocities there; species:
+    /// the particles' own ρp and c_p where they differ (specificHeat held), else empty.
     void advance(ParticleCloud& cloud, const CarrierSample& gas,
-                 const std::vector<Vec3>& startVelocities,
-                 const std::vector<double>& stepLengths) const;
+                 const std::vector<Vec3>& startVelocities, const std::vector<double>& stepLengths,
+                 const SpeciesValues& species) const;
 
 private:
     HeatTransferModel model_;

@@ -11,7 +11,8 @@ TurbulentDispersion::TurbulentDispersion(const PhysicsSettings& physics, std::ui
 
 void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
                                   const std::vector<double>& stepLengths,
-                                  const DragParameters& drag, const Vec3& bodyAcceleration) {
+                                  const DragParameters& drag, const Vec3& bodyAcceleration,
+                                  const SpeciesValues& species) {
     if (!on()) return;
     cloud.eddy.resize(cloud.size()); // new particles start without an eddy
     fluctuations_.resize(cloud.size());
@@ -19,7 +20,7 @@ void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
     if (model_ == DispersionModel::eddyInteraction)
         eddyInteractionBatch({cloud.eddy, cloud.id, cloud.velocity, gas.velocity,
                               gas.turbulentKineticEnergy, gas.dissipationRate, cloud.radius,
-                              stepLengths, fluctuations_},
+                              stepLengths, fluctuations_, species.density, species.acceleration},
                              constants_, drag, bodyAcceleration, seed_);
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t n = 0; n < count; ++n) {

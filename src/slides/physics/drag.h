@@ -72,6 +72,13 @@ struct DragParameters {
     double fluidDensity = 0;       ///< [kg/m³]
     double kinematicViscosity = 0; ///< [m²/s]
     double particleDensity = 0;    ///< [kg/m³]
+    /// The same drag on a particle of density ρp (particle species,
+    /// integrate/injection_settings.h).
+    DragParameters withDensity(double density) const {
+        DragParameters own = *this;
+        own.particleDensity = density;
+        return own;
+    }
 };
 
 /// Drag response time τ = τ_St / f(Re) [s]: dv/dt = (u − v)/τ is Eq. 3.16's drag per unit mass.

@@ -153,6 +153,7 @@ void Stepper::buildStages() {
     if (carrier_.keepsLocations()) stages_.push_back(&Stepper::orderInMemory);
     stages_.push_back(&Stepper::inject);
     if (plane_) stages_.push_back(&Stepper::holdInPlane);
+    if (!scene_.particles.alike()) stages_.push_back(&Stepper::holdSpeciesValues);
     if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
     if (coulomb_) stages_.push_back(&Stepper::kickByCoulombForces);
     // The paths' starts, for impulse collisions, heating and meeting surfaces at the touch.
@@ -206,7 +207,7 @@ void Stepper::kickByContacts(double) {
 
 void Stepper::kickByCoulombForces(double) {
     coulomb_->evaluate(cloud_);
-    coulomb_->halfKick(cloud_, stepLengths_);
+    coulomb_->halfKick(cloud_, stepLengths_, particleDensities_);
 }
 
 void Stepper::recordPathStarts(double) {
@@ -217,7 +218,7 @@ void Stepper::recordPathStarts(double) {
 void Stepper::heat(double) {
     startTemperatures_ = cloud_.temperature;
     startTemperatures_.resize(cloud_.size(), scene_.particles.injectionTemperature);
-    heating_.advance(cloud_, gas_, startVelocities_, stepLengths_);
+    heating_.advance(cloud_, gas_, startVelocities_, stepLengths_, speciesValues());
 }
 
 void Stepper::exchangeAcrossRanks(double) {
@@ -258,9 +259,8 @@ void advanceEach(Scheme scheme, std::vector<Vec3>& x, std::vector<Vec3>& v,
     if (!density.empty()) {
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
         for (std::ptrdiff_t i = 0; i < count; ++i) {
-            DragParameters own = drag;
-            own.particleDensity = density[i];
-            const double tau = dragResponseTime(own, radius[i], (u[i] - w[i]).norm());
+            const double tau =
+                dragResponseTime(drag.withDensity(density[i]), radius[i], (u[i] - w[i]).norm());
             scheme(x[i], v[i], u[i], tau, acceleration[i], fraction * h[i]);
         }
         return;
@@ -286,7 +286,7 @@ void Stepper::sampleGas(double) {
 }
 
 void Stepper::disperse(double) {
-    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_);
+    dispersion_.perturb(cloud_, gas_, stepLengths_, drag_, bodyAcceleration_, speciesValues());
 }
 
 namespace {
@@ -306,7 +306,6 @@ void Stepper::advance(double h) {
     auto& x = cloud_.position;
     auto& v = cloud_.velocity;
     const auto& radius = cloud_.radius;
-    holdSpeciesValues();
     if (maxeyRiley_) {
         // The predicted ends walk from the particles' cells and see the same eddies.
         midpointLocations_ = cloud_.carrierLocation;
@@ -326,7 +325,7 @@ void Stepper::advance(double h) {
             if (plane_) plane_->project(out.velocity);
             keepStartGasWhereOutside(midpointLocations_, gas_, 0, out);
         };
-        return chargedMotion_->advance(cloud_, gas_, sampleMidpoint, stepLengths_);
+        return chargedMotion_->advance(cloud_, gas_, sampleMidpoint, stepLengths_, speciesValues());
     }
     const auto& u = gas_.velocity;
     const Vec3& a = bodyAcceleration_;
@@ -424,7 +423,7 @@ void Stepper::advanceAdaptively(double h) {
     if (chargedMotion_) {
         lorentzRates_.resize(count);
         for (std::size_t i = 0; i < count; ++i)
-            lorentzRates_[i] = chargedMotion_->ratesOf(cloud_, i);
+            lorentzRates_[i] = chargedMotion_->ratesOf(cloud_, i, speciesValues());
     }
     const auto blocks = static_cast<std::ptrdiff_t>((count + samplingBlock - 1) / samplingBlock);
     long attempted = 0, rejected = 0;
@@ -440,6 +439,10 @@ void Stepper::advanceAdaptively(double h) {
                             .trialStep = {cloud_.modelState.data() + first, n}};
         if (dispersion_.on()) batch.eddyVelocity = {eddyVelocities_.data() + first, n};
         if (chargedMotion_) batch.lorentz = {lorentzRates_.data() + first, n};
+        if (!particleDensities_.empty()) {
+            batch.density = {particleDensities_.data() + first, n};
+            batch.acceleration = {particleAccelerations_.data() + first, n};
+        }
         if (carrier_.keepsLocations()) batch.locations = {cloud_.carrierLocation.data() + first, n};
         const AdaptiveSteps steps = advanceAdaptiveBatch(
             batch, time_ + 0.5 * h, scene_.time.tolerance, drag_, bodyAcceleration_, carrier_);
@@ -449,24 +452,28 @@ void Stepper::advanceAdaptively(double h) {
     adaptiveSteps_ += {attempted, rejected};
 }
 
-void Stepper::holdSpeciesValues() {
+void Stepper::holdSpeciesValues(double) {
     const ParticleSettings& particles = scene_.particles;
-    if (particles.alike()) return;
     const std::size_t count = cloud_.size();
     particleSpecies_.resize(count);
     particleDensities_.resize(count);
     particleAccelerations_.resize(count);
+    if (heating_.on()) particleSpecificHeats_.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         particleSpecies_[i] = particles.speciesOf(cloud_.id[i]);
         const auto species = static_cast<std::size_t>(particleSpecies_[i]);
         particleDensities_[i] = particles.species[species].density;
         particleAccelerations_[i] = speciesAccelerations_[species];
+        if (heating_.on()) particleSpecificHeats_[i] = particles.species[species].specificHeat;
     }
 }
 
+SpeciesValues Stepper::speciesValues() const {
+    return {particleDensities_, particleAccelerations_, particleSpecificHeats_};
+}
+
 void Stepper::flyBallistically(double) {
-    if (chargedMotion_) return chargedMotion_->fly(cloud_, stepLengths_);
-    holdSpeciesValues();
+    if (chargedMotion_) return chargedMotion_->fly(cloud_, stepLengths_, speciesValues());
     const auto count = static_cast<std::ptrdiff_t>(cloud_.size());
 #pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
     for (std::ptrdiff_t i = 0; i < count; ++i) {

@@ -8,6 +8,9 @@
 //      is advanced only over its remainder t + h − t_k, as a parcel's step fraction in OpenFOAM
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
 //      steady carriers);
+//   1b. where the injectors' species differ, each particle's density, body acceleration (and
+//      with heat transfer specific heat) is held for the stages that take them
+//      (integrate/species_values.h);
 //   2. the carrier is sampled once for the whole cloud;
 //   2b. with turbulent dispersion, the gas velocity each particle sees gets its time-averaged
 //      eddy fluctuation over the step (integrate/turbulent_dispersion.h);
@@ -63,6 +66,7 @@
 #include "slides/integrate/maxey_riley.h"
 #include "slides/integrate/particle_heating.h"
 #include "slides/integrate/plane_constraint.h"
+#include "slides/integrate/species_values.h"
 #include "slides/integrate/turbulent_dispersion.h"
 #include "slides/io/run_snapshot.h"
 #include "slides/physics/drag.h"
@@ -146,9 +150,11 @@ private:
     void advance(double h);
     /// 3. the stream step without gas (carrier none): gravity only, exactly.
     void flyBallistically(double h);
-    /// Fills particleSpecies_, particleDensities_ and particleAccelerations_ for the particles in
-    /// flight (with differing species only).
-    void holdSpeciesValues();
+    /// 1b. (differing species only) each particle's species values for the step's stages:
+    /// particleSpecies_, particleDensities_ and particleAccelerations_.
+    void holdSpeciesValues(double h);
+    /// The values holdSpeciesValues held (empty spans when the particles are alike).
+    SpeciesValues speciesValues() const;
     /// 3b. temperatures relax toward the gas temperature.
     void heat(double h);
     /// 3c (impulses). Contacts between particles during the step.
@@ -214,7 +220,8 @@ private:
     std::vector<std::int32_t> particleSpecies_;
     std::vector<double> particleDensities_;
     std::vector<Vec3> particleAccelerations_;
-    std::vector<Vec3> speciesAccelerations_; ///< one a species
+    std::vector<double> particleSpecificHeats_; ///< with heat transfer
+    std::vector<Vec3> speciesAccelerations_;    ///< one a species
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
     std::vector<double> startTemperatures_; ///< with heat transfer

@@ -57,8 +57,8 @@ ImpactResult SurfaceImpacts::meet(ParticleCloud& cloud, std::size_t i, const Vec
                 const double mass = sphereMass(arrival.radius, particles_.densityOf(arrival.id));
                 const ImpactBody stuck{arrival.velocity, cloud.angularVelocity[i], 1 / mass,
                                        arrival.radius};
-                arrival.temperature +=
-                    collisionalTemperatureRise(kineticEnergy(stuck), particles_.specificHeat, mass);
+                arrival.temperature += collisionalTemperatureRise(
+                    kineticEnergy(stuck), particles_.specificHeatOf(arrival.id) * mass);
             }
         }
         if (impact != ImpactResult::rebounded)
@@ -228,8 +228,8 @@ ImpactResult SurfaceImpacts::meetFirst(ParticleCloud& cloud, std::size_t i, Path
     const double energyBefore = kineticEnergy(body);
     applyImpulse(body, rigid, normal, impulse);
     if (heats())
-        cloud.temperature[i] += collisionalTemperatureRise(energyBefore - kineticEnergy(body),
-                                                           particles_.specificHeat, mass);
+        cloud.temperature[i] += collisionalTemperatureRise(
+            energyBefore - kineticEnergy(body), particles_.specificHeatOf(cloud.id[i]) * mass);
     if (erosion_[static_cast<std::size_t>(surface)] && !onDeposit)
         erode(*erosion_[static_cast<std::size_t>(surface)], stepEnd - (1 - fraction) * path.length,
               centre - radius * normal, normal, impulse, radius, mass, particleMaterial,
