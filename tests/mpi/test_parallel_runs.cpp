@@ -9,7 +9,8 @@
 // processor patch goes on from the matching face in the same step (run/rank_exchange.h). Each
 // refused input ends every rank with exit status 2, one message, and nothing written. On the
 // axisymmetric 5° wedge of the same jet, each part finds the wedge's axis from its own faces of
-// the wedge patches, so the arrivals agree with the serial run's to round-off.
+// the wedge patches, so the arrivals agree with the serial run's to round-off. A checkpoint of
+// one rank count restarts on another, or serially, to the serial run's arrivals bit for bit.
 #include "../support/case_runs.h"
 
 #include "slides/io/hdf5_file.h"
@@ -260,9 +261,39 @@ TEST(ParallelRefusals, NozzleOnNoRank) {
     expectRefused("nozzleOutside", 2, "key 'nozzle.radius': the nozzle disc");
 }
 
-TEST(ParallelRefusals, CheckpointsNotYetInParallel) {
-    expectRefused("x2", 2, "checkpointing is not supported in parallel runs yet",
-                  "--checkpoint-every 10");
+/// A checkpoint is the whole run's (gathered on rank 0, without the parts' mesh locations): a
+/// checkpoint of 2 ranks continues on 3, one of 3 ranks serially, and a serial one on 2 ranks,
+/// each to the serial run's arrivals and counts bit for bit (the slabs' cases share one
+/// dictionary, so one fingerprint). The first runs end a few steps after their last checkpoint,
+/// whose steps are all of length dt (an end time on a checkpoint's step would shorten that step
+/// by the round-off of the summed time).
+TEST(ParallelRuns, RestartOnAnotherRankCountOrSeriallyGivesTheSerialRun) {
+    const fs::path twoThenThree = scratch("restart-2-3");
+    ASSERT_EQ(track("x2", 2, twoThenThree, "--checkpoint-every 100 --end-time 0.0041"), 0)
+        << slurp(twoThenThree.string() + ".log");
+    ASSERT_TRUE(fs::exists(twoThenThree / "checkpoint.h5"));
+    ASSERT_EQ(track("x3", 3, twoThenThree, "--restart"), 0)
+        << slurp(twoThenThree.string() + ".log");
+    expectAsSerial(twoThenThree);
+    expectConserved(summaryOf(twoThenThree)["particles"]);
+
+    const fs::path threeThenSerial = scratch("restart-3-0");
+    ASSERT_EQ(track("x3", 3, threeThenSerial, "--checkpoint-every 150 --end-time 0.0031"), 0)
+        << slurp(threeThenSerial.string() + ".log");
+    ASSERT_EQ(track("x2", 0, threeThenSerial, "--restart"), 0)
+        << slurp(threeThenSerial.string() + ".log");
+    expectAsSerial(threeThenSerial);
+
+    const fs::path serialThenTwo = scratch("restart-0-2");
+    ASSERT_EQ(track("x2", 0, serialThenTwo, "--checkpoint-every 100 --end-time 0.0021"), 0)
+        << slurp(serialThenTwo.string() + ".log");
+    ASSERT_EQ(track("x2", 2, serialThenTwo, "--restart"), 0)
+        << slurp(serialThenTwo.string() + ".log");
+    expectAsSerial(serialThenTwo);
+    for (const fs::path& output : {twoThenThree, threeThenSerial, serialThenTwo}) {
+        fs::remove_all(output);
+        fs::remove(output.string() + ".log");
+    }
 }
 
 } // namespace

@@ -25,15 +25,12 @@ namespace slides {
 namespace {
 
 /// What a parallel run does not do yet: refused before anything is written (exit status 2).
-void requireParallelSupport(const RunOptions& options, const Scene& scene) {
+void requireParallelSupport(const Scene& scene) {
     const auto refuse = [](const std::string& file, const std::string& key,
                            const std::string& what) {
         throw AgreedInputError(
             InputError(file, 0, key, what + " is not supported in parallel runs yet"));
     };
-    if (options.checkpointEvery > 0 || options.restart)
-        refuse("command line", options.restart ? "--restart" : "--checkpoint-every",
-               "checkpointing");
     const std::string dictionary = scene.dictionaryFile.string();
     if (scene.collisions.model != CollisionModel::none)
         refuse(dictionary, "collisions.model", "colliding particles (ghosts across ranks)");
@@ -81,7 +78,7 @@ ResolvedScene resolveOnEveryRank(const RunOptions& options, const RankCommunicat
     }
     try {
         ResolvedScene resolved = resolveScene(options.caseDirectory, options.overrides, ranks);
-        requireParallelSupport(options, resolved.scene);
+        requireParallelSupport(resolved.scene);
         return resolved;
     } catch (const AgreedError&) {
         throw;
@@ -137,7 +134,8 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
         options.output.empty() ? options.caseDirectory / "slides" : options.output;
     const RunFingerprint fingerprint = fingerprintOf(scene.dictionaryFile, scene.time.dt);
     std::optional<CheckpointState> resumed;
-    if (options.restart) resumed = readCheckpoint(outputDirectory, fingerprint);
+    if (options.restart) // every rank reads the whole state; a bad file ends them alike
+        agreeOnFailure(ranks, [&] { resumed = readCheckpoint(outputDirectory, fingerprint); });
     std::optional<RunOutput> output;
     agreeOnFailure(ranks, [&] {
         if (writes)
@@ -178,8 +176,8 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     double nextFrame = scene.output.interval;
     if (resumed) {
         nextFrame = resumed->nextFrameTime;
-        resumeFromCheckpoint(stepper, std::move(*resumed));
-        if (!options.quiet)
+        resumeFromCheckpoint(stepper, std::move(*resumed), ranks);
+        if (!quiet)
             std::printf("restarted from %s at t = %.6g s (step %ld)\n",
                         (outputDirectory / checkpointFileName).c_str(), stepper.time(),
                         stepper.steps());
@@ -195,7 +193,8 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
         }
         if (options.checkpointEvery > 0 && stepper.steps() % options.checkpointEvery == 0)
-            writeCheckpoint(*output, stepper, nextFrame, runTimes(), fingerprint);
+            writeCheckpoint(output ? &*output : nullptr, stepper, nextFrame, runTimes(),
+                            fingerprint, ranks, exits, scene.surfaces.size());
         const long done = stepper.injected() - static_cast<long>(stepper.cloud().size());
         double fraction = stepper.time() / scene.time.endTime;
         if (scene.time.stopWhenAllDone)

@@ -118,6 +118,15 @@ void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
     if (cloud.stateWidth != cloud_.stateWidth)
         throw std::logic_error("checkpoint's model state does not fit the scene's models");
     cloud_ = std::move(cloud);
+    if (exchange_) {
+        cloud_.carrierLocation.assign(cloud_.size(), -1);
+        for (auto* array : {&stepLengths_, &startTemperatures_, &gas_.temperature}) array->clear();
+        startPositions_.clear();
+        startVelocities_.clear();
+        exchange_->exchange(cloud_, 0,
+                            {stepLengths_, startPositions_, startVelocities_, startTemperatures_,
+                             gas_.temperature});
+    }
     arrivals_ = std::move(arrivals);
     // The deposit is the particles that stuck: the arrivals at deposition surfaces.
     for (const Arrival& arrival : arrivals_)

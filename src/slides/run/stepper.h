@@ -118,7 +118,9 @@ public:
     /// The state now, for the writers (io/run_snapshot.h).
     RunSnapshot snapshot() const;
     /// Continues from a checkpoint's state: every later step is bit for bit the one the
-    /// stepper that wrote the checkpoint would have taken.
+    /// stepper that wrote the checkpoint would have taken. In a parallel run every rank is given
+    /// the whole cloud, and each keeps the particles its part of the mesh holds (located anew:
+    /// the checkpoint may come from another rank count).
     void resume(const RunCounters& counters, ParticleCloud cloud, std::vector<Arrival> arrivals,
                 std::vector<ContactSpring> springs = {});
 
