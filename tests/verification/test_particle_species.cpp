@@ -43,6 +43,7 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace slides {
@@ -432,25 +433,36 @@ TEST(ParticleSpecies, HertzContactOfTwoMaterialsLastsAsHertzTheoryWithTheCombine
     EXPECT_LT(same.youngsModulus, 0.9 * youngs);
 }
 
+/// Scene run 600 steps in one go, and run 300 steps, checkpointed to scratch, read back and
+/// resumed for the other 300 in a stepper of its own.
+std::pair<std::unique_ptr<Stepper>, std::unique_ptr<Stepper>>
+wholeAndResumedRuns(const test::ScratchDirectory& scratch, const Scene& scene,
+                    const CarrierField& carrier) {
+    auto whole = std::make_unique<Stepper>(scene, carrier);
+    auto resumed = std::make_unique<Stepper>(scene, carrier);
+    Stepper half(scene, carrier);
+    for (int step = 0; step < 600; ++step) whole->step();
+    for (int step = 0; step < 300; ++step) half.step();
+    const RunFingerprint fingerprint =
+        fingerprintOf(scratch.path / "constant" / "slidesProperties", scene.time.dt);
+    writeCheckpoint(scratch.path, half.snapshot(), nullptr, {}, 0, {}, fingerprint);
+    CheckpointState state = readCheckpoint(scratch.path, fingerprint);
+    resumed->resume(state.counters, std::move(state.cloud), std::move(state.arrivals));
+    for (int step = 0; step < 300; ++step) resumed->step();
+    return {std::move(whole), std::move(resumed)};
+}
+
 TEST(ParticleSpecies, CheckpointOfTwoSpeciesRestartsToTheSameBits) {
     test::ScratchDirectory scratch("species-checkpoint");
     Scene scene = sceneOf(scratch, twoGuns("density 2500; material { bulkModulus 40e9; }",
                                            "density 8000;", "impulse"));
     ASSERT_EQ(scene.particles.species.size(), 2u);
     const auto carrier = carrierOf(scene);
-    Stepper whole(scene, *carrier), half(scene, *carrier), resumed(scene, *carrier);
-    for (int step = 0; step < 600; ++step) whole.step();
-    for (int step = 0; step < 300; ++step) half.step();
-    const RunFingerprint fingerprint =
-        fingerprintOf(scratch.path / "constant" / "slidesProperties", scene.time.dt);
-    writeCheckpoint(scratch.path, half.snapshot(), nullptr, {}, 0, {}, fingerprint);
-    CheckpointState state = readCheckpoint(scratch.path, fingerprint);
-    resumed.resume(state.counters, std::move(state.cloud), std::move(state.arrivals));
-    for (int step = 0; step < 300; ++step) resumed.step();
-    EXPECT_GT(whole.collisions(), 0);
-    EXPECT_EQ(resumed.collisions(), whole.collisions());
-    ASSERT_GT(whole.arrivals().size() + whole.cloud().size(), 500u);
-    expectSameBits(whole, resumed);
+    const auto [whole, resumed] = wholeAndResumedRuns(scratch, scene, *carrier);
+    EXPECT_GT(whole->collisions(), 0);
+    EXPECT_EQ(resumed->collisions(), whole->collisions());
+    ASSERT_GT(whole->arrivals().size() + whole->cloud().size(), 500u);
+    expectSameBits(*whole, *resumed);
 }
 
 TEST(ParticleSpecies, SimdRelaxationWithOwnDensitiesMatchesTheScalarLaneByLane) {
@@ -802,19 +814,11 @@ TEST(ParticleSpecies, CheckpointOfRowsOfTwoDensitiesRestartsToTheSameBits) {
     const Scene scene = crossingScene(scratch, {2500, 8000});
     ASSERT_EQ(scene.particles.species.size(), 2u);
     const auto carrier = carrierOf(scene);
-    Stepper whole(scene, *carrier), half(scene, *carrier), resumed(scene, *carrier);
-    for (int step = 0; step < 600; ++step) whole.step();
-    for (int step = 0; step < 300; ++step) half.step();
-    const RunFingerprint fingerprint =
-        fingerprintOf(scratch.path / "constant" / "slidesProperties", scene.time.dt);
-    writeCheckpoint(scratch.path, half.snapshot(), nullptr, {}, 0, {}, fingerprint);
-    CheckpointState state = readCheckpoint(scratch.path, fingerprint);
-    resumed.resume(state.counters, std::move(state.cloud), std::move(state.arrivals));
-    for (int step = 0; step < 300; ++step) resumed.step();
-    EXPECT_GT(whole.collisions(), 10);
-    EXPECT_EQ(resumed.collisions(), whole.collisions());
-    ASSERT_GT(whole.arrivals().size(), 100u);
-    expectSameBits(whole, resumed);
+    const auto [whole, resumed] = wholeAndResumedRuns(scratch, scene, *carrier);
+    EXPECT_GT(whole->collisions(), 10);
+    EXPECT_EQ(resumed->collisions(), whole->collisions());
+    ASSERT_GT(whole->arrivals().size(), 100u);
+    expectSameBits(*whole, *resumed);
 }
 
 TEST(ParticleSpecies, ArrivalsAndFramesCarryEachRowsDensity) {
