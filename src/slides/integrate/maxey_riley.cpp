@@ -81,7 +81,8 @@ Vec3 MaxeyRileyStepper::dragGasVelocity(const CarrierSample& gas, std::size_t i,
 
 void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasStart,
                                 const EndSampler& sampleEnd, const std::vector<double>& stepLengths,
-                                std::span<const std::int32_t> species) {
+                                std::span<const std::int32_t> species,
+                                std::span<const double> densities) {
     const auto count = static_cast<std::ptrdiff_t>(cloud.size());
     const auto termsOf = [&](std::ptrdiff_t i) -> const SpeciesTerms& {
         return species_[species.empty() ? 0 : static_cast<std::size_t>(species[i])];
@@ -148,13 +149,6 @@ void MaxeyRileyStepper::advance(ParticleCloud& cloud, const CarrierSample& gasSt
     }
     const auto tauStart = std::span(responseTimes_).first(cloud.size());
     const auto tauEnd = std::span(responseTimes_).last(cloud.size());
-    if (!species.empty()) {
-        densities_.resize(cloud.size());
-        for (std::size_t i = 0; i < cloud.size(); ++i)
-            densities_[i] = species_[static_cast<std::size_t>(species[i])].density;
-    }
-    const std::span<const double> densities =
-        species.empty() ? std::span<const double>() : std::span<const double>(densities_);
     const DragParameters& drag = species_.front().drag; // ρp: densities, when given
     dragResponseTimes(drag, cloud.radius, starts, tauStart, densities);
     dragResponseTimes(drag, cloud.radius, ends, tauEnd, densities);

@@ -71,9 +71,10 @@ public:
 
     /// Advances every particle i over stepLengths[i]: gasStart is the gas each sees at the
     /// step's start (with what needs() asks for), sampleEnd samples the predicted ends.
-    /// species[i] is particle i's species (empty: all of species 0).
+    /// species[i] is particle i's species and densities[i] its ρp (both empty: all of species 0).
     void advance(ParticleCloud& cloud, const CarrierSample& gasStart, const EndSampler& sampleEnd,
-                 const std::vector<double>& stepLengths, std::span<const std::int32_t> species);
+                 const std::vector<double>& stepLengths, std::span<const std::int32_t> species,
+                 std::span<const double> densities);
 
 private:
     /// What ρp sets in the step's terms, for one species.
@@ -111,7 +112,6 @@ private:
     std::vector<StartModeStep> startModes_; ///< φ and its integrals at both ends of the step
     std::vector<double> slipSpeeds_;        ///< |u − v| the drag is taken at: N starts, N ends
     std::vector<double> responseTimes_;     ///< τ at those slips, the same layout
-    std::vector<double> densities_;         ///< ρp at those slips, with differing species
 };
 
 } // namespace slides

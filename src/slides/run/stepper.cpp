@@ -324,7 +324,8 @@ void Stepper::advance(double h) {
             if (plane_) plane_->project(out.velocity);
             keepStartGasWhereOutside(midpointLocations_, gas_, 0, out);
         };
-        return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_, particleSpecies_);
+        return maxeyRiley_->advance(cloud_, gas_, sampleEnd, stepLengths_, particleSpecies_,
+                                    particleDensities_);
     }
     if (chargedMotion_ && scene_.time.integrator != Integrator::adaptiveRungeKutta) {
         midpointLocations_ = cloud_.carrierLocation;
