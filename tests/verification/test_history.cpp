@@ -5,6 +5,7 @@
 // Eur. Phys. J. B 18:343; Daitche 2013, J. Comput. Phys. 254:93, Sec. 5): observed orders of
 // the reference quadratures (orders 1 and 2) and of the window + exponential tail, with and
 // without initial slip, and the tail's accuracy over 10⁵ steps.
+#include "../support/complex_error.h"
 #include "slides/physics/history_integrator.h"
 #include "slides/physics/history_kernel.h"
 #include "slides/physics/unsteady.h"
@@ -40,23 +41,6 @@ struct Case {
 const Case light{};
 const Case heavy{1000, 2500, 1e-6, 5e-4};
 
-/// e^{z²} erfc(z) for Re z ≥ 0: power series Σ (−z)^k / Γ(1 + k/2) for |z| < 2.5 (largest term
-/// e^{|z|²} < 600, so round-off stays below 1e-13), else Laplace's continued fraction
-/// 1/(√π (z + ½/(z + 1/(z + 3/2/(z + …))))), 400 levels.
-std::complex<double> scaledComplementaryError(std::complex<double> z) {
-    if (std::abs(z) < 2.5) {
-        std::complex<double> sum = 0, power = 1;
-        for (int k = 0; k < 120; ++k) {
-            sum += power / std::tgamma(1.0 + 0.5 * k);
-            power *= -z;
-        }
-        return sum;
-    }
-    std::complex<double> fraction = z;
-    for (int n = 400; n >= 1; --n) fraction = z + (0.5 * n) / fraction;
-    return 1.0 / (std::sqrt(std::numbers::pi) * fraction);
-}
-
 /// Relative velocity w = v − U of dw/dt = −w/τ − r_H d/dt ∫ w/√(t−τ) dτ + g, w(0) = w0: in
 /// Laplace space W (s + r_H√π √s + 1/τ) = w0 + g/s; with λ1,2 the roots of λ² − αλ + 1/τ,
 /// α = r_H√π (real or a complex pair, Re λ = α/2 > 0), and E_i = e^{λ_i² t} erfc(λ_i √t):
@@ -66,16 +50,17 @@ double exactRelativeVelocity(const Case& c, double w0, double g, double t) {
     const double alpha = std::sqrt(std::numbers::pi) * c.historyRate();
     const Complex root = std::sqrt(Complex(alpha * alpha - 4 * c.dragRate()));
     const Complex l1 = 0.5 * (alpha - root), l2 = 0.5 * (alpha + root);
-    const Complex e1 = scaledComplementaryError(l1 * std::sqrt(t));
-    const Complex e2 = scaledComplementaryError(l2 * std::sqrt(t));
+    const Complex e1 = test::scaledComplementaryError(l1 * std::sqrt(t));
+    const Complex e2 = test::scaledComplementaryError(l2 * std::sqrt(t));
     return ((w0 * (l2 * e2 - l1 * e1) + g * ((1.0 - e1) / l1 - (1.0 - e2) / l2)) / (l2 - l1))
         .real();
 }
 
 TEST(HistoryClosedForm, ComplexErrorFunctionAgreesWithTheRealOne) {
-    // The two branches of the complex e^{z²}erfc(z) against the real one on the real axis.
+    // The library's real e^{x²}erfc(x) (physics/history_integrator.h) against libcerf's complex
+    // one, which the closed forms take, on the real axis.
     for (const double x : {0.0, 0.3, 1.0, 2.4, 2.6, 5.0, 30.0})
-        EXPECT_NEAR(scaledComplementaryError(std::complex<double>(x)).real() /
+        EXPECT_NEAR(test::scaledComplementaryError(std::complex<double>(x)).real() /
                         slides::scaledComplementaryError(x),
                     1.0, 1e-11)
             << "x = " << x;
