@@ -1,7 +1,7 @@
 // ctest-labels: history physics
 // Basset history in a vortex (Candelier, Angilella & Souhar 2004, J. Fluid Mech. 545:113; the
 // test case of Daitche 2013, J. Comput. Phys. 254:93, Sec. 5.2). A sphere in solid-body rotation
-// u = Ω(−y, x), released with the gas velocity, drifts outward under the centrifugal lag. With
+// u = Ω(−y, x), released with the gas velocity, lighter than the fluid, drifts inward. With
 // Stokes drag, added mass, the pressure gradient and the Basset term (Eq. 3.2–3.3), per effective
 // mass m_p + m_f/2 and with time in 1/Ω (Daitche's form, exact for Maxey & Riley's equation):
 //   dv/dt = R Du/Dt − (R/S)(v − u) − R √(3/(πS)) d/dt ∫_0^t (v − u)/√(t − τ) dτ,
