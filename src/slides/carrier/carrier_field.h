@@ -138,6 +138,29 @@ public:
         throw std::logic_error("carrier " + describe() + " has no patch " + name);
     }
 
+    /// A location meaning that another rank's part of the mesh holds the point.
+    static constexpr std::int32_t heldElsewhere = std::numeric_limits<std::int32_t>::max();
+
+    /// The location of the tetrahedron behind each triangle of patchTriangles(name), in its
+    /// order (a point drawn just into the gas from a triangle lies in it, so the injector needs
+    /// no search), or heldElsewhere where another rank's part holds the triangle; empty when the
+    /// carrier keeps no locations.
+    virtual std::vector<std::int32_t> patchTriangleLocations(const std::string& name) const {
+        (void)name;
+        return {};
+    }
+
+    /// Of points given alike to every rank, those this rank keeps: each is kept on exactly one
+    /// rank, the lowest whose part holds it (rank 0 when none does). A location of −1 is searched
+    /// for here, heldElsewhere is not held here, any other is held here; a kept point's location
+    /// is its tetrahedron here (−1 when no rank holds it). Collective on a decomposed mesh; one
+    /// process keeps every point and leaves its locations.
+    virtual void keepHeldHere(std::span<const Vec3> points, std::span<std::int32_t> locations,
+                              std::vector<std::uint8_t>& keep) const {
+        (void)locations;
+        keep.assign(points.size(), 1);
+    }
+
     /// The box the carrier's field covers, if it is bounded (a mesh).
     virtual std::optional<Box> bounds() const { return std::nullopt; }
 

@@ -374,15 +374,20 @@ std::vector<std::string> FoamCarrier::boundaryNames() const {
     return names;
 }
 
-std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) const {
+const FoamPatch& FoamCarrier::patchNamed(const std::string& name) const {
     const auto patch = std::find_if(mesh_.patches.begin(), mesh_.patches.end(),
                                     [&](const FoamPatch& p) { return p.name == name; });
     if (patch == mesh_.patches.end()) throw std::logic_error("no patch " + name + " in the mesh");
+    return *patch;
+}
+
+std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) const {
     // Each face fanned about its point average, as the locator's tetrahedra split it, so the
     // triangles lie on the boundary the particles are tracked against. OpenFOAM orders a
     // boundary face's points counter-clockwise seen from outside: reversed, seen from the gas.
+    const FoamPatch& patch = patchNamed(name);
     std::vector<PatchTriangle> triangles;
-    for (int face = patch->start; face < patch->start + patch->size; ++face) {
+    for (int face = patch.start; face < patch.start + patch.size; ++face) {
         const auto points = mesh_.pointsOf(face);
         const Vec3& middle = locator_->faceMidpoint(face);
         for (std::size_t k = 0; k < points.size(); ++k)
@@ -390,6 +395,18 @@ std::vector<PatchTriangle> FoamCarrier::patchTriangles(const std::string& name) 
                 {middle, mesh_.points[points[(k + 1) % points.size()]], mesh_.points[points[k]]});
     }
     return triangles;
+}
+
+std::vector<std::int32_t> FoamCarrier::patchTriangleLocations(const std::string& name) const {
+    // Triangle k of a face is the base of the owner's tetrahedron (cell, face, edge k).
+    const FoamPatch& patch = patchNamed(name);
+    std::vector<std::int32_t> locations;
+    for (int face = patch.start; face < patch.start + patch.size; ++face) {
+        const auto corners = static_cast<int>(mesh_.pointsOf(face).size());
+        for (int edge = 0; edge < corners; ++edge)
+            locations.push_back(locator_->tetIndex(mesh_.owner[face], face, edge));
+    }
+    return locations;
 }
 
 void FoamCarrier::holdInterval(double start, double end) const {

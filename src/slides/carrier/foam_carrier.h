@@ -91,11 +91,13 @@ public:
     }
     std::vector<std::string> boundaryNames() const override;
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
+    std::vector<std::int32_t> patchTriangleLocations(const std::string& name) const override;
     /// Lattice scheme: latticeSpacing [m], latticeErrorMax and latticeErrorRms (|ΔU|/U_ref against
     /// cellPoint), latticeErrorPoints, latticeExactPathPoints (random points it does not serve).
     std::vector<std::pair<std::string, double>> figures() const override { return latticeFigures_; }
 
 private:
+    const FoamPatch& patchNamed(const std::string& name) const;
     /// levels: the series' levels around the batch's time, null for a frozen field.
     void sampleAt(const Vec3& point, std::int32_t& location, CarrierNeeds needs, CarrierSample& out,
                   std::size_t index, const LevelCache<FoamLevel>::Pair* levels) const;

@@ -77,7 +77,7 @@ Injector::Start Injector::drawStart(ParticleId id, std::uint32_t attempt) const 
         const PatchSampler::Point point = patch_->draw(uniformArea, u1, u2, uniformTurn);
         // On a wedge a given velocity turns with the point: it is the wedge's, swept.
         return {point.position, point.turn * settings.patch.velocity.value_or(Vec3::Zero()),
-                point.normal};
+                point.normal, patchLocations_.empty() ? -1 : patchLocations_[point.triangle]};
     }
     const JetNozzle& nozzle = settings.nozzle;
     const Vec3 across = nozzle.crossSpanDirection;
@@ -119,10 +119,12 @@ void Injector::drawStarts(std::span<const ParticleId> ids, const ParticleCloud& 
     positions_.resize(count);
     addedVelocities_.resize(count);
     patchNormals_.resize(startsAtNormalGasVelocity_ ? count : 0);
+    locations_.resize(count);
     const auto keep = [&](std::size_t k, const Start& start) {
         positions_[k] = start.position;
         addedVelocities_[k] = start.addedVelocity;
         if (startsAtNormalGasVelocity_) patchNormals_[k] = start.patchNormal;
+        locations_[k] = start.location;
     };
     if (!avoidOverlap_) {
         for (std::size_t k = 0; k < count; ++k) keep(k, drawStart(ids[k], 0));
@@ -173,6 +175,9 @@ void Injector::injectUntil(double until, double time, const CarrierField& carrie
         addedVelocities_ = std::vector<Vec3>();
         patchNormals_ = std::vector<Vec3>();
         radii_ = std::vector<double>();
+        addedIds_ = std::vector<ParticleId>();
+        locations_ = std::vector<std::int32_t>();
+        keep_ = std::vector<std::uint8_t>();
         nearby_.reset();
         gas_ = CarrierSample{};
     }
@@ -183,10 +188,50 @@ void Injector::reinject(std::span<const ParticleId> ids, double time, const Carr
     if (!ids.empty()) add(ids, time, carrier, cloud);
 }
 
+void Injector::leaveToOtherRanks(std::span<const ParticleId> ids, const CarrierField& carrier) {
+    keep_.assign(ids.size(), 1);
+    // Whether a start is searched for is alike on every rank: every start of a batch is drawn
+    // on a patch triangle whose tetrahedron is known, or none is.
+    const bool searched = std::ranges::find(locations_, -1) != locations_.end();
+    if (splitAmongRanks_ && searched) {
+        carrier.keepHeldHere(positions_, locations_, keep_);
+    } else {
+        for (std::size_t k = 0; k < ids.size(); ++k) {
+            if (locations_[k] != CarrierField::heldElsewhere) continue;
+            if (splitAmongRanks_)
+                keep_[k] = 0;
+            else
+                locations_[k] = -1;
+        }
+    }
+    addedIds_.clear();
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        if (!keep_[k]) continue;
+        const std::size_t n = addedIds_.size();
+        addedIds_.push_back(ids[k]);
+        positions_[n] = positions_[k];
+        addedVelocities_[n] = addedVelocities_[k];
+        if (startsAtNormalGasVelocity_) patchNormals_[n] = patchNormals_[k];
+        radii_[n] = radii_[k];
+        locations_[n] = locations_[k];
+    }
+    const std::size_t n = addedIds_.size();
+    positions_.resize(n);
+    addedVelocities_.resize(n);
+    if (startsAtNormalGasVelocity_) patchNormals_.resize(n);
+    radii_.resize(n);
+    locations_.resize(n);
+}
+
 void Injector::add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
                    ParticleCloud& cloud) {
-    if (settings_.model == InjectionModel::patch && !patch_)
+    if (settings_.model == InjectionModel::patch && !patch_) {
         patch_.emplace(carrier.patchTriangles(settings_.patch.name), carrier.axisymmetry());
+        // A point drawn on a triangle lies in the tetrahedron behind it, unless it is then
+        // turned about a wedge's axis.
+        if (!patch_->swept())
+            patchLocations_ = carrier.patchTriangleLocations(settings_.patch.name);
+    }
     if (avoidOverlap_ && !nearby_) nearby_.emplace(planeConstraintOf(carrier));
     const std::size_t count = ids.size();
     radii_.resize(count);
@@ -194,24 +239,22 @@ void Injector::add(std::span<const ParticleId> ids, double time, const CarrierFi
         radii_[k] = settings_.givesRows() ? settings_.rows[ids[k] - settings_.firstId].radius
                                           : radius_.draw(settings_.injection.seed, ids[k]);
     drawStarts(ids, cloud);
-    // A mesh carrier's search finds each particle's cell: the cloud keeps it, so the first
-    // step walks from there instead of searching again.
+    leaveToOtherRanks(ids, carrier);
     if (carrier.keepsLocations()) {
+        // A mesh carrier's location of each start, which the cloud keeps so that the first step
+        // walks from there: the tetrahedron behind its patch triangle, else searched for.
+        carrier.sampleFrom(positions_, locations_, time, CarrierNeeds{}, gas_);
         cloud.carrierLocation.resize(cloud.size(), -1);
-        cloud.carrierLocation.resize(cloud.size() + count, -1);
-        carrier.sampleFrom(positions_,
-                           std::span(cloud.carrierLocation).subspan(cloud.size(), count), time,
-                           CarrierNeeds{}, gas_);
     } else if (startsAtGasVelocity_ || startsAtNormalGasVelocity_) {
         carrier.sample(positions_, time, CarrierNeeds{}, gas_);
     }
-    for (std::size_t k = 0; k < count; ++k) {
-        const ParticleId id = ids[k];
+    for (std::size_t k = 0; k < addedIds_.size(); ++k) {
         Vec3 velocity = addedVelocities_[k];
         if (startsAtGasVelocity_) velocity += gas_.velocity[k];
         if (startsAtNormalGasVelocity_)
             velocity = gas_.velocity[k].dot(patchNormals_[k]) * patchNormals_[k];
-        cloud.add(id, positions_[k], velocity, radii_[k]);
+        cloud.add(addedIds_[k], positions_[k], velocity, radii_[k]);
+        if (carrier.keepsLocations()) cloud.carrierLocation.push_back(locations_[k]);
     }
 }
 

@@ -62,6 +62,10 @@ public:
              const ParticleSettings& particles);
     explicit Injector(const InjectorSettings& settings, bool avoidOverlap = false);
 
+    /// Adds, on each rank of a decomposed mesh, only the particles its part holds: a start
+    /// another rank's part holds is left to that rank, one searched for is kept by the lowest
+    /// rank holding it (CarrierField::keepHeldHere).
+    void splitAmongRanks() { splitAmongRanks_ = true; }
     /// Adds every particle due before `until` that is not yet in the cloud; the gas is
     /// sampled once for the whole batch.
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);
@@ -94,6 +98,9 @@ private:
         Vec3 position;
         Vec3 addedVelocity; ///< added to the gas velocity (disc), or the velocity (cone, file)
         Vec3 patchNormal;   ///< model patch: the normal the gas velocity is projected on
+        /// The tetrahedron behind the patch triangle it was drawn on (patchLocations_), or
+        /// CarrierField::heldElsewhere; −1 when not known.
+        std::int32_t location = -1;
     };
     /// The start of particle id from its draw `attempt`.
     Start drawStart(ParticleId id, std::uint32_t attempt) const;
@@ -102,6 +109,10 @@ private:
     void drawStarts(std::span<const ParticleId> ids, const ParticleCloud& cloud);
     /// A box holding every start point a draw gives (disc, cone: the disc; patch: the patch).
     Box startBounds() const;
+    /// Of ids, into addedIds_, those this rank adds (split among ranks: those its part holds,
+    /// CarrierField::keepHeldHere); the starts' arrays keep theirs, in order. Not split, every
+    /// start stays, those drawn on another rank's triangles to be searched for.
+    void leaveToOtherRanks(std::span<const ParticleId> ids, const CarrierField& carrier);
     /// Adds the particles ids at time: radius, start, velocity (the gas sampled once).
     void add(std::span<const ParticleId> ids, double time, const CarrierField& carrier,
              ParticleCloud& cloud);
@@ -111,12 +122,18 @@ private:
     bool startsAtGasVelocity_; ///< disc: gas velocity + random; cone, file: the given velocity
     bool startsAtNormalGasVelocity_; ///< patch without a velocity: (U·n) n
     bool avoidOverlap_;              ///< redraw a start that overlaps a particle near the injector
+    bool splitAmongRanks_ = false;
     long injected_ = 0;
     std::vector<ParticleId> ids_;
     std::vector<Vec3> positions_;
     std::vector<Vec3> addedVelocities_;
     std::vector<Vec3> patchNormals_;
     std::optional<PatchSampler> patch_; ///< model patch: its faces, from the carrier
+    /// Model patch on a mesh carrier (not swept): the tetrahedron behind each triangle.
+    std::vector<std::int32_t> patchLocations_;
+    std::vector<ParticleId> addedIds_;    ///< the particles this rank adds of a batch
+    std::vector<std::int32_t> locations_; ///< a mesh carrier's: each start's location
+    std::vector<std::uint8_t> keep_;      ///< of a batch's starts: whether this rank adds it
     std::vector<double> radii_;
     std::optional<NearbySpheres> nearby_; ///< avoidOverlap_: the spheres near the injector
     CarrierSample gas_;

@@ -46,6 +46,10 @@ void InjectorSet::resumeReinjected(const std::vector<std::uint64_t>& reinjected)
     reinjected_ = reinjected;
 }
 
+void InjectorSet::splitAmongRanks() {
+    for (Injector& injector : injectors_) injector.splitAmongRanks();
+}
+
 void InjectorSet::injectUntil(double until, double time, const CarrierField& carrier,
                               ParticleCloud& cloud) {
     for (Injector& injector : injectors_) injector.injectUntil(until, time, carrier, cloud);

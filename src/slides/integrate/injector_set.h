@@ -23,6 +23,9 @@ public:
     /// avoidOverlap: no particle placed overlapping one near its injector (collisions on).
     explicit InjectorSet(const std::vector<InjectorSettings>& injectors, bool avoidOverlap = false);
 
+    /// Each rank adds only the particles its part of a decomposed mesh holds (a parallel run's
+    /// stepper: its cloud is split among the ranks), instead of every particle.
+    void splitAmongRanks();
     /// Adds every particle due before `until` of every injector, injector by injector.
     void injectUntil(double until, double time, const CarrierField& carrier, ParticleCloud& cloud);
     /// Particles injected so far, all injectors.

@@ -80,7 +80,7 @@ PatchSampler::Point PatchSampler::draw(double uniformArea, double u1, double u2,
     const Vec3 across = (t[1] - t[0]).cross(t[2] - t[0]); // into the gas, |.| = 2 area
     const Vec3 normal = across.normalized();
     const Vec3 inGas = onFace + hairOf(across) * normal;
-    if (!sweep_) return {inGas, normal};
+    if (!sweep_) return {inGas, normal, Mat3::Identity(), k};
     // Onto the centre plane along the hoop direction, then about the axis.
     const AxisymmetricFrame& frame = *sweep_;
     const Vec3 hoop = frame.axis.cross(frame.radial);
@@ -88,7 +88,7 @@ PatchSampler::Point PatchSampler::draw(double uniformArea, double u1, double u2,
     const Vec3 profileNormal = (normal - normal.dot(hoop) * hoop).normalized();
     const Mat3 turn =
         Eigen::AngleAxisd(2 * std::numbers::pi * uniformTurn, frame.axis).toRotationMatrix();
-    return {frame.origin + turn * (onProfile - frame.origin), turn * profileNormal, turn};
+    return {frame.origin + turn * (onProfile - frame.origin), turn * profileNormal, turn, k};
 }
 
 } // namespace slides

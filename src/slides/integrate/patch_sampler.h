@@ -37,6 +37,7 @@ public:
         Vec3 position; ///< on the patch, moved into the gas by 1e-9 of its triangle's size
         Vec3 normal;   ///< unit normal of the patch there, into the gas
         Mat3 turn = Mat3::Identity(); ///< the turn about a wedge's axis that took it there
+        std::size_t triangle = 0;     ///< the index of the triangle it was drawn on
     };
     /// The point of uniforms on [0, 1): the first picks the triangle, the next two the point in
     /// it; on a wedge, uniformTurn the angle about the axis (ignored otherwise).

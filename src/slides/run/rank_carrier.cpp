@@ -172,16 +172,60 @@ double RankCarrier::resolutionLength(std::int32_t location) const {
 }
 
 std::vector<PatchTriangle> RankCarrier::patchTriangles(const std::string& name) const {
-    std::vector<PatchTriangle> mine;
-    const auto& patches = part_->mesh().patches;
-    for (const FoamPatch& patch : patches)
-        if (patch.name == name && patch.size > 0) mine = part_->patchTriangles(name);
     std::vector<PatchTriangle> triangles;
-    for (const Bytes& part : ranks_.allGather(bytesOf(mine))) append(triangles, part);
+    for (const Bytes& part : ranks_.allGather(bytesOf(myPatchTriangles(name))))
+        append(triangles, part);
     if (triangles.empty())
         throw InputError((caseDirectory_ / "processor*").string(), 0, "",
                          "patch '" + name + "' has no faces on any rank");
     return triangles;
+}
+
+std::vector<std::int32_t> RankCarrier::patchTriangleLocations(const std::string& name) const {
+    // In patchTriangles' order: the ranks' triangles one after the other.
+    const std::vector<std::int32_t> mine = myPatchTriangles(name).empty()
+                                               ? std::vector<std::int32_t>{}
+                                               : part_->patchTriangleLocations(name);
+    std::vector<std::int32_t> locations;
+    const auto counts = ranks_.allGather(bytesOf(std::vector<std::uint64_t>{mine.size()}));
+    for (int r = 0; r < ranks_.size(); ++r) {
+        if (r == ranks_.rank()) {
+            locations.insert(locations.end(), mine.begin(), mine.end());
+            continue;
+        }
+        std::vector<std::uint64_t> count;
+        append(count, counts[static_cast<std::size_t>(r)]);
+        locations.resize(locations.size() + count.at(0), heldElsewhere);
+    }
+    return locations;
+}
+
+void RankCarrier::keepHeldHere(std::span<const Vec3> points, std::span<std::int32_t> locations,
+                               std::vector<std::uint8_t>& keep) const {
+    // Key (held here 0, else 1) × ranks + rank: the smallest over the ranks keeps the point.
+    const int me = ranks_.rank(), size = ranks_.size();
+    const FoamLocator& locator = part_->locator();
+    std::vector<int> keys(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (locations[k] == -1) {
+            const TetLocation at = locator.locateFrom(part_->meshPoint(points[k]), -1);
+            locations[k] = at.found() ? at.tet : heldElsewhere;
+        }
+        const bool held = locations[k] >= 0 && locations[k] < locator.tetIndexEnd();
+        keys[k] = (held ? 0 : size) + me;
+    }
+    ranks_.min(keys);
+    keep.resize(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        keep[k] = keys[k] % size == me;
+        if (keys[k] >= size) locations[k] = -1; // held by no rank
+    }
+}
+
+std::vector<PatchTriangle> RankCarrier::myPatchTriangles(const std::string& name) const {
+    for (const FoamPatch& patch : part_->mesh().patches)
+        if (patch.name == name && patch.size > 0) return part_->patchTriangles(name);
+    return {};
 }
 
 } // namespace slides

@@ -45,6 +45,11 @@ public:
     std::vector<std::string> boundaryNames() const override { return boundaryNames_; }
     /// Patch name's faces on every rank, in rank order.
     std::vector<PatchTriangle> patchTriangles(const std::string& name) const override;
+    /// This rank's triangles' tetrahedra, heldElsewhere for the other ranks' (collective).
+    std::vector<std::int32_t> patchTriangleLocations(const std::string& name) const override;
+    /// The lowest rank whose part holds a point keeps it, by one minimum over the ranks.
+    void keepHeldHere(std::span<const Vec3> points, std::span<std::int32_t> locations,
+                      std::vector<std::uint8_t>& keep) const override;
     std::optional<Box> bounds() const override { return bounds_; }
     /// A wedge's frame and a 2-D mesh's plane, as every part finds them (each from its own
     /// faces of the wedge or empty patches: the same to round-off).
@@ -59,6 +64,9 @@ public:
     int firstProcessorPatch() const { return static_cast<int>(boundaryNames_.size()); }
 
 private:
+    /// Patch name's triangles on this rank's part (none when its part has no face of it).
+    std::vector<PatchTriangle> myPatchTriangles(const std::string& name) const;
+
     std::filesystem::path caseDirectory_;
     RankCommunicator ranks_;
     std::unique_ptr<FoamCarrier> part_;

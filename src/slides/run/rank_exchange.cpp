@@ -81,11 +81,20 @@ std::int32_t RankExchange::walk(const Vec3& point, std::int32_t location, int& t
     return -3 - at.exitPatch; // −2 when the patch is not known
 }
 
-std::size_t RankExchange::exchange(ParticleCloud& cloud, std::size_t firstFresh,
-                                   TravellingArrays step) {
+void RankExchange::keepHeldHere(ParticleCloud& cloud, TravellingArrays step) {
+    cloud.carrierLocation.assign(cloud.size(), -1);
+    std::vector<std::uint8_t> keep;
+    carrier_.keepHeldHere(cloud.position, cloud.carrierLocation, keep);
+    std::vector<std::size_t> leaving;
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+        if (!keep[i]) leaving.push_back(i);
+    removeParticles(cloud, step, leaving);
+}
+
+void RankExchange::exchange(ParticleCloud& cloud, TravellingArrays step) {
     const auto start = std::chrono::steady_clock::now();
     const RankCommunicator& ranks = this->ranks();
-    const int me = ranks.rank(), size = ranks.size();
+    const int size = ranks.size();
     const FoamMesh& mesh = carrier_.part().mesh();
     const FoamLocator& locator = carrier_.part().locator();
     forEachTravelling(cloud, step, [&](const auto& array) {
@@ -93,34 +102,10 @@ std::size_t RankExchange::exchange(ParticleCloud& cloud, std::size_t firstFresh,
             throw std::logic_error("rank exchange: a per-particle array of another length");
     });
 
-    // Entering particles: key = (held here 0, left through a patch of the case 1, else 2) ×
-    // ranks + rank; the smallest key over the ranks keeps the particle.
+    // Each walks to its position; (index, face) of those reaching a processor patch.
     std::vector<std::size_t> leaving;
-    const std::size_t fresh = cloud.size() - firstFresh;
-    std::vector<int> keys(fresh);
-    std::vector<std::int32_t> freshLocations(fresh);
-    for (std::size_t k = 0; k < fresh; ++k) {
-        const std::size_t i = firstFresh + k;
-        int face = -1;
-        const std::int32_t location = walk(cloud.position[i], cloud.carrierLocation[i], face);
-        const int kind = location >= 0 ? 0 : location <= -3 ? 1 : 2;
-        keys[k] = kind * size + me;
-        freshLocations[k] = location;
-    }
-    ranks.min(keys);
-    for (std::size_t k = 0; k < fresh; ++k) {
-        if (keys[k] % size == me)
-            cloud.carrierLocation[firstFresh + k] = freshLocations[k];
-        else
-            leaving.push_back(firstFresh + k);
-    }
-    const std::size_t leftToOthers = leaving.size();
-    removeParticles(cloud, step, leaving); // entering ones at the end: the rest keep their index
-    leaving.clear();
-
-    // The others walk to their positions; (index, face) of those reaching a processor patch.
     std::vector<std::pair<std::size_t, int>> transit;
-    for (std::size_t i = 0; i < firstFresh; ++i) {
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
         int face = -1;
         cloud.carrierLocation[i] = walk(cloud.position[i], cloud.carrierLocation[i], face);
         if (face >= 0) transit.emplace_back(i, face);
@@ -199,7 +184,6 @@ std::size_t RankExchange::exchange(ParticleCloud& cloud, std::size_t firstFresh,
     }
     figures_.seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return leftToOthers;
 }
 
 } // namespace slides

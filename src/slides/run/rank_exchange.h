@@ -8,9 +8,10 @@
 // any rank. Here the tetrahedron walk toward the particle's end position (carrier/foam_locator.h)
 // is what reaches the face; the particle travels with every per-particle array the cloud holds
 // for the models that are on, and the stepper's arrays of the step still to be used (its step
-// length, the start of its path, temperatures). Particles that entered in this step entered on
-// every rank alike (counter-based draws keyed by id): each stays only on the lowest rank whose
-// part holds it (rank 0 when none does), so it lands on exactly one rank.
+// length, the start of its path, temperatures). Particles enter only on the rank whose part
+// holds them (integrate/injector.h, splitAmongRanks); a checkpoint's cloud, given to every rank
+// alike, stays only on the lowest rank whose part holds each particle (rank 0 when none does),
+// so each lands on exactly one rank.
 //
 //     RankExchange exchange(rankCarrier);  Stepper stepper(scene, rankCarrier, &exchange);
 #pragma once
@@ -44,12 +45,14 @@ class RankExchange {
 public:
     explicit RankExchange(const RankCarrier& carrier);
 
-    /// Particles [firstFresh, size) entered in this step on every rank alike: each is kept by
-    /// one rank only. The rest walk from their location to their position and cross processor
-    /// patches until every one is on the rank that holds it. Afterwards each particle's location
-    /// is its tetrahedron on this rank, or ≤ −2 outside the mesh through the patch of the case it
-    /// left by. Returns how many entering particles this rank left to others.
-    std::size_t exchange(ParticleCloud& cloud, std::size_t firstFresh, TravellingArrays step);
+    /// Every particle walks from its location to its position, crossing processor patches
+    /// until each is on the rank that holds it. Afterwards each particle's location is its
+    /// tetrahedron on this rank, or ≤ −2 outside the mesh through the patch of the case it left
+    /// by.
+    void exchange(ParticleCloud& cloud, TravellingArrays step);
+    /// Of a cloud every rank holds alike (a checkpoint's), each rank keeps the particles its
+    /// part holds (CarrierField::keepHeldHere), located there.
+    void keepHeldHere(ParticleCloud& cloud, TravellingArrays step);
     /// Whether no rank holds a particle (collective).
     bool everyRankEmpty(std::size_t particles) const;
 

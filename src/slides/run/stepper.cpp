@@ -67,6 +67,7 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         softSpheres_.emplace(scene.collisions, scene.particles, scene.surfaces, scene.domain);
     tracksSpin_ = tracksSpin(scene.physics.spin, scene.collisions, scene.surfaces);
     exchange_ = exchange;
+    if (exchange) injectors_.splitAmongRanks();
     plane_ = planeConstraintOf(carrier);
     for (const ParticleSpecies& species : scene.particles.species)
         speciesAccelerations_.push_back(bodyAcceleration(
@@ -123,9 +124,8 @@ void Stepper::resume(const RunCounters& counters, ParticleCloud cloud,
         for (auto* array : {&stepLengths_, &startTemperatures_, &gas_.temperature}) array->clear();
         startPositions_.clear();
         startVelocities_.clear();
-        exchange_->exchange(cloud_, 0,
-                            {stepLengths_, startPositions_, startVelocities_, startTemperatures_,
-                             gas_.temperature});
+        exchange_->keepHeldHere(cloud_, {stepLengths_, startPositions_, startVelocities_,
+                                         startTemperatures_, gas_.temperature});
     }
     arrivals_ = std::move(arrivals);
     // The deposit is the particles that stuck: the arrivals at deposition surfaces.
@@ -189,7 +189,6 @@ void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
 
 void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();
-    firstFresh_ = alreadyInFlight;
     injectors_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
     stepLengths_.assign(cloud_.size(), h);
@@ -231,10 +230,8 @@ void Stepper::heat(double) {
 }
 
 void Stepper::exchangeAcrossRanks(double) {
-    // Entering particles another rank keeps take no step here.
-    particleSteps_ -= exchange_->exchange(
-        cloud_, firstFresh_,
-        {stepLengths_, startPositions_, startVelocities_, startTemperatures_, gas_.temperature});
+    exchange_->exchange(cloud_, {stepLengths_, startPositions_, startVelocities_,
+                                 startTemperatures_, gas_.temperature});
 }
 
 void Stepper::holdInPlane(double) { plane_->hold(cloud_); }

@@ -7,7 +7,8 @@
 //   1. particles due before t + h enter (integrate/injector.h); one due at t_k inside the step
 //      is advanced only over its remainder t + h − t_k, as a parcel's step fraction in OpenFOAM
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
-//      steady carriers);
+//      steady carriers); in a parallel run each enters only on the rank whose part of the mesh
+//      holds it;
 //   1b. where the injectors' species differ, each particle's density, body acceleration (and
 //      with heat transfer specific heat) is held for the stages that take them
 //      (integrate/species_values.h);
@@ -131,9 +132,9 @@ private:
     void buildStages();
     /// 0. an unsteady carrier made ready for the step's times [t, t + h].
     void holdCarrierTimes(double h);
-    /// 1. particles due before t + h enter; their step lengths.
     /// 0. every few steps, the cloud in the order of its carrier locations.
     void orderInMemory(double h);
+    /// 1. particles due before t + h enter; their step lengths.
     void inject(double h);
     /// The arrays of the models that are on sized for the particles entered at [from, size),
     /// with their start values (location unknown, no spin, injection temperature, charge).
@@ -212,7 +213,6 @@ private:
     bool tracksSpin_ = false; ///< ω kept: spin, or any impulse contact with friction
     std::vector<Stage> stages_;
     RankExchange* exchange_ = nullptr; ///< parallel runs only
-    std::size_t firstFresh_ = 0;       ///< the particles that entered in this step start here
 
     // Scratch, reused every step.
     CarrierSample gas_;
