@@ -56,7 +56,9 @@ void removeParticles(ParticleCloud& cloud, TravellingArrays& step,
 
 } // namespace
 
-RankExchange::RankExchange(const RankCarrier& carrier) : carrier_(carrier) {}
+RankExchange::RankExchange(const RankCarrier& carrier)
+    : carrier_(carrier),
+      clearance_(carrier.part().mesh(), carrier.part().locator(), carrier.firstProcessorPatch()) {}
 
 bool RankExchange::everyRankEmpty(std::size_t particles) const {
     return ranks().sum(static_cast<std::uint64_t>(particles)) == 0;
@@ -91,7 +93,7 @@ void RankExchange::keepHeldHere(ParticleCloud& cloud, TravellingArrays step) {
     removeParticles(cloud, step, leaving);
 }
 
-void RankExchange::exchange(ParticleCloud& cloud, TravellingArrays step) {
+void RankExchange::exchange(ParticleCloud& cloud, TravellingArrays step, bool startsLocated) {
     const auto start = std::chrono::steady_clock::now();
     const RankCommunicator& ranks = this->ranks();
     const int size = ranks.size();
@@ -102,10 +104,15 @@ void RankExchange::exchange(ParticleCloud& cloud, TravellingArrays step) {
             throw std::logic_error("rank exchange: a per-particle array of another length");
     });
 
-    // Each walks to its position; (index, face) of those reaching a processor patch.
+    // Each walks to its position, unless it surely crossed no processor face; (index, face) of
+    // those reaching one.
     std::vector<std::size_t> leaving;
     std::vector<std::pair<std::size_t, int>> transit;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const std::int32_t location = cloud.carrierLocation[i];
+        if (startsLocated && location >= 0 && location < locator.tetIndexEnd() &&
+            clearance_.stayed(location, carrier_.part().meshPoint(cloud.position[i])))
+            continue;
         int face = -1;
         cloud.carrierLocation[i] = walk(cloud.position[i], cloud.carrierLocation[i], face);
         if (face >= 0) transit.emplace_back(i, face);

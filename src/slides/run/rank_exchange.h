@@ -17,6 +17,7 @@
 #pragma once
 
 #include "slides/core/particle_cloud.h"
+#include "slides/run/processor_clearance.h"
 #include "slides/run/rank_carrier.h"
 
 #include <cstdint>
@@ -45,11 +46,13 @@ class RankExchange {
 public:
     explicit RankExchange(const RankCarrier& carrier);
 
-    /// Every particle walks from its location to its position, crossing processor patches
-    /// until each is on the rank that holds it. Afterwards each particle's location is its
-    /// tetrahedron on this rank, or ≤ −2 outside the mesh through the patch of the case it left
-    /// by.
-    void exchange(ParticleCloud& cloud, TravellingArrays step);
+    /// Each particle walks from its location to its position, crossing processor patches until
+    /// each is on the rank that holds it. Afterwards its location is its tetrahedron there, or
+    /// ≤ −2 outside the mesh through the patch of the case it left by. With startsLocated
+    /// (each location is the tetrahedron of the particle's position at the step's start), one
+    /// that crossed no processor face (ProcessorClearance) is left at its start's tetrahedron,
+    /// to walk at the next step's sample as in a serial run.
+    void exchange(ParticleCloud& cloud, TravellingArrays step, bool startsLocated);
     /// Of a cloud every rank holds alike (a checkpoint's), each rank keeps the particles its
     /// part holds (CarrierField::keepHeldHere), located there.
     void keepHeldHere(ParticleCloud& cloud, TravellingArrays step);
@@ -67,6 +70,7 @@ private:
     int patchTowards(int rank) const;
 
     const RankCarrier& carrier_;
+    ProcessorClearance clearance_;
     RankExchangeFigures figures_;
 };
 

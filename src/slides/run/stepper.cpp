@@ -230,8 +230,15 @@ void Stepper::heat(double) {
 }
 
 void Stepper::exchangeAcrossRanks(double) {
-    exchange_->exchange(cloud_, {stepLengths_, startPositions_, startVelocities_,
-                                 startTemperatures_, gas_.temperature});
+    // The step located every start where it sampled the gas there (sampleGas, or the midpoint
+    // rule's own start sample).
+    const bool startsLocated =
+        scene_.carrier.type != CarrierType::none &&
+        (samplesGasForAll() || scene_.time.integrator == Integrator::exponentialMidpoint);
+    exchange_->exchange(
+        cloud_,
+        {stepLengths_, startPositions_, startVelocities_, startTemperatures_, gas_.temperature},
+        startsLocated);
 }
 
 void Stepper::holdInPlane(double) { plane_->hold(cloud_); }
