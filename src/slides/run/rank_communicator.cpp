@@ -5,6 +5,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -42,7 +43,21 @@ std::vector<Bytes> split(const Bytes& all, const std::vector<int>& counts,
     return parts;
 }
 
+MpiTally processTally; // every communicator of this process alike
+
+/// The status of an MPI communication call, its count and wall time added to the tally.
+template <class Call> int timed(Call call) {
+    const auto start = std::chrono::steady_clock::now();
+    const int status = call();
+    ++processTally.calls;
+    processTally.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return status;
+}
+
 } // namespace
+
+MpiTally RankCommunicator::tally() { return processTally; }
 
 RankCommunicator RankCommunicator::world() {
     RankCommunicator ranks;
@@ -54,15 +69,19 @@ RankCommunicator RankCommunicator::world() {
 
 void RankCommunicator::sum(std::span<double> values) const {
     if (!mpi_ || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE, MPI_SUM,
-                        MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE,
+                                   MPI_SUM, MPI_COMM_WORLD);
+          }),
           "MPI_Allreduce");
 }
 
 void RankCommunicator::sum(std::span<std::uint64_t> values) const {
     if (!mpi_ || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_UINT64_T, MPI_SUM,
-                        MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()),
+                                   MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+          }),
           "MPI_Allreduce");
 }
 
@@ -73,22 +92,28 @@ std::uint64_t RankCommunicator::sum(std::uint64_t value) const {
 
 void RankCommunicator::min(std::span<int> values) const {
     if (!mpi_ || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_INT, MPI_MIN,
-                        MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_INT,
+                                   MPI_MIN, MPI_COMM_WORLD);
+          }),
           "MPI_Allreduce");
 }
 
 void RankCommunicator::min(std::span<double> values) const {
     if (!mpi_ || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE, MPI_MIN,
-                        MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE,
+                                   MPI_MIN, MPI_COMM_WORLD);
+          }),
           "MPI_Allreduce");
 }
 
 void RankCommunicator::max(std::span<double> values) const {
     if (!mpi_ || values.empty()) return;
-    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE, MPI_MAX,
-                        MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allreduce(MPI_IN_PLACE, values.data(), countOf(values.size()), MPI_DOUBLE,
+                                   MPI_MAX, MPI_COMM_WORLD);
+          }),
           "MPI_Allreduce");
 }
 
@@ -109,8 +134,10 @@ void RankCommunicator::keepLowestClaims(std::span<double> records, std::size_t w
     };
     MPI_Op operation = MPI_OP_NULL;
     check(MPI_Op_create(lowestClaim, 1, &operation), "MPI_Op_create");
-    const int status = MPI_Allreduce(MPI_IN_PLACE, records.data(), countOf(records.size() / width),
-                                     record, operation, MPI_COMM_WORLD);
+    const int status = timed([&] {
+        return MPI_Allreduce(MPI_IN_PLACE, records.data(), countOf(records.size() / width), record,
+                             operation, MPI_COMM_WORLD);
+    });
     MPI_Op_free(&operation);
     MPI_Type_free(&record);
     check(status, "MPI_Allreduce");
@@ -120,8 +147,10 @@ std::vector<Bytes> RankCommunicator::exchange(const std::vector<Bytes>& outgoing
     if (!mpi_) return outgoing;
     std::vector<int> sendCounts(static_cast<std::size_t>(size_)), receiveCounts(sendCounts.size());
     for (std::size_t r = 0; r < sendCounts.size(); ++r) sendCounts[r] = countOf(outgoing[r].size());
-    check(MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT,
-                       MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT,
+                                  MPI_COMM_WORLD);
+          }),
           "MPI_Alltoall");
     std::vector<Bytes> incoming(sendCounts.size());
     std::vector<MPI_Request> requests;
@@ -140,7 +169,10 @@ std::vector<Bytes> RankCommunicator::exchange(const std::vector<Bytes>& outgoing
                         &requests.back()),
               "MPI_Isend");
     }
-    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+    check(timed([&] {
+              return MPI_Waitall(static_cast<int>(requests.size()), requests.data(),
+                                 MPI_STATUSES_IGNORE);
+          }),
           "MPI_Waitall");
     return incoming;
 }
@@ -149,14 +181,18 @@ std::vector<Bytes> RankCommunicator::allGather(std::span<const std::byte> bytes)
     if (!mpi_) return {Bytes(bytes.begin(), bytes.end())};
     std::vector<int> counts(static_cast<std::size_t>(size_));
     const int count = countOf(bytes.size());
-    check(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+          }),
           "MPI_Allgather");
     std::size_t total = 0;
     const auto offsets = displacements(counts, total);
     if (total == 0) return std::vector<Bytes>(counts.size());
     Bytes all(total);
-    check(MPI_Allgatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(), offsets.data(),
-                         MPI_BYTE, MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Allgatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(),
+                                    offsets.data(), MPI_BYTE, MPI_COMM_WORLD);
+          }),
           "MPI_Allgatherv");
     return split(all, counts, offsets);
 }
@@ -165,13 +201,17 @@ std::vector<Bytes> RankCommunicator::gather(std::span<const std::byte> bytes) co
     if (!mpi_) return {Bytes(bytes.begin(), bytes.end())};
     std::vector<int> counts(static_cast<std::size_t>(size_));
     const int count = countOf(bytes.size());
-    check(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+          }),
           "MPI_Gather");
     std::size_t total = 0;
     const auto offsets = displacements(counts, total);
     Bytes all(rank_ == 0 ? total : 0);
-    check(MPI_Gatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(), offsets.data(),
-                      MPI_BYTE, 0, MPI_COMM_WORLD),
+    check(timed([&] {
+              return MPI_Gatherv(bytes.data(), count, MPI_BYTE, all.data(), counts.data(),
+                                 offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
+          }),
           "MPI_Gatherv");
     if (rank_ != 0) return {};
     return split(all, counts, offsets);
@@ -180,9 +220,10 @@ std::vector<Bytes> RankCommunicator::gather(std::span<const std::byte> bytes) co
 std::string RankCommunicator::broadcast(const std::string& text, int root) const {
     if (!mpi_) return text;
     int length = countOf(text.size());
-    check(MPI_Bcast(&length, 1, MPI_INT, root, MPI_COMM_WORLD), "MPI_Bcast");
+    check(timed([&] { return MPI_Bcast(&length, 1, MPI_INT, root, MPI_COMM_WORLD); }), "MPI_Bcast");
     std::string result = rank_ == root ? text : std::string(static_cast<std::size_t>(length), ' ');
-    check(MPI_Bcast(result.data(), length, MPI_CHAR, root, MPI_COMM_WORLD), "MPI_Bcast");
+    check(timed([&] { return MPI_Bcast(result.data(), length, MPI_CHAR, root, MPI_COMM_WORLD); }),
+          "MPI_Bcast");
     return result;
 }
 

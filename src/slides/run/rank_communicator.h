@@ -19,6 +19,13 @@ namespace slides {
 
 using Bytes = std::vector<std::byte>;
 
+/// What this process's MPI communication calls cost: how many, and the wall seconds spent in
+/// them (waits for the other ranks included).
+struct MpiTally {
+    std::uint64_t calls = 0;
+    double seconds = 0;
+};
+
 class RankCommunicator {
 public:
     /// The one rank of a serial run.
@@ -30,6 +37,8 @@ public:
     int size() const { return size_; }
     /// Whether the run is under MPI (-parallel), even with one rank.
     bool parallel() const { return mpi_; }
+    /// The tally of every MPI communication call this process made so far.
+    static MpiTally tally();
 
     /// Σ over ranks, element by element, in place.
     void sum(std::span<double> values) const;

@@ -88,27 +88,33 @@ ResolvedScene resolveOnEveryRank(const RunOptions& options, const RankCommunicat
 }
 
 /// Per rank: moving particles, particle-steps, stepping and exchange seconds, particles and
-/// bytes sent, under summary.json's performance.ranks.
+/// bytes sent, MPI calls and seconds in them while stepping, under summary.json's
+/// performance.ranks.
 nlohmann::json rankFigures(const RankCommunicator& ranks, const Stepper& stepper,
-                           const RankExchange& exchange, double steppingSeconds) {
+                           const RankExchange& exchange, double steppingSeconds,
+                           const MpiTally& steppingMpi) {
     const RankExchangeFigures& own = exchange.figures();
-    const std::array<double, 6> mine{static_cast<double>(stepper.cloud().size()),
+    const std::array<double, 8> mine{static_cast<double>(stepper.cloud().size()),
                                      static_cast<double>(stepper.particleSteps()),
                                      steppingSeconds,
                                      own.seconds,
                                      static_cast<double>(own.particlesSent),
-                                     static_cast<double>(own.bytesSent)};
+                                     static_cast<double>(own.bytesSent),
+                                     static_cast<double>(steppingMpi.calls),
+                                     steppingMpi.seconds};
     const auto bytes = std::as_bytes(std::span(mine));
     nlohmann::json figures = nlohmann::json::array();
     for (const Bytes& part : ranks.gather(bytes)) {
-        std::array<double, 6> theirs{};
+        std::array<double, 8> theirs{};
         std::memcpy(theirs.data(), part.data(), sizeof theirs);
         figures.push_back({{"moving", theirs[0]},
                            {"particleSteps", theirs[1]},
                            {"steppingSeconds", theirs[2]},
                            {"exchangeSeconds", theirs[3]},
                            {"particlesSent", theirs[4]},
-                           {"bytesSent", theirs[5]}});
+                           {"bytesSent", theirs[5]},
+                           {"mpiCalls", theirs[6]},
+                           {"mpiSeconds", theirs[7]}});
     }
     return figures;
 }
@@ -166,6 +172,7 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     Clock::duration stepping{};
+    MpiTally steppingMpi; // this segment's, not a restarted run's earlier ones
     // The whole run's times: those of the segments before a restart, and this one's.
     const RunTimes earlier = resumed ? resumed->times : RunTimes{};
     const auto runTimes = [&] {
@@ -186,8 +193,11 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
     }
     while (!stepper.finished()) {
         const auto stepStart = Clock::now();
+        const MpiTally mpiBefore = RankCommunicator::tally();
         stepper.step();
         stepping += Clock::now() - stepStart;
+        steppingMpi.calls += RankCommunicator::tally().calls - mpiBefore.calls;
+        steppingMpi.seconds += RankCommunicator::tally().seconds - mpiBefore.seconds;
         if (stepper.time() >= nextFrame * (1 - 1e-12) || stepper.finished()) {
             writeFrame();
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
@@ -216,7 +226,8 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
         return;
     }
     const GatheredRun run = gatherRun(stepper.snapshot(), ranks, exits, scene.surfaces.size());
-    const nlohmann::json perRank = rankFigures(ranks, stepper, *exchange, metrics.steppingSeconds);
+    const nlohmann::json perRank =
+        rankFigures(ranks, stepper, *exchange, metrics.steppingSeconds, steppingMpi);
     if (!writes) return;
     auto summary = runSummary(resolved, run.snapshot(), metrics);
     summary["performance"]["ranks"] = perRank;
