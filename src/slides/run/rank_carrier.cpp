@@ -6,6 +6,7 @@
 #include "slides/core/name_table.h"
 #include "slides/run/rank_agreement.h"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
@@ -173,8 +174,9 @@ double RankCarrier::resolutionLength(std::int32_t location) const {
 
 std::vector<PatchTriangle> RankCarrier::patchTriangles(const std::string& name) const {
     std::vector<PatchTriangle> triangles;
-    for (const Bytes& part : ranks_.allGather(bytesOf(myPatchTriangles(name))))
-        append(triangles, part);
+    const std::vector<PatchTriangle> mine =
+        holdsPatch(name) ? part_->patchTriangles(name) : std::vector<PatchTriangle>{};
+    for (const Bytes& part : ranks_.allGather(bytesOf(mine))) append(triangles, part);
     if (triangles.empty())
         throw InputError((caseDirectory_ / "processor*").string(), 0, "",
                          "patch '" + name + "' has no faces on any rank");
@@ -183,9 +185,8 @@ std::vector<PatchTriangle> RankCarrier::patchTriangles(const std::string& name) 
 
 std::vector<std::int32_t> RankCarrier::patchTriangleLocations(const std::string& name) const {
     // In patchTriangles' order: the ranks' triangles one after the other.
-    const std::vector<std::int32_t> mine = myPatchTriangles(name).empty()
-                                               ? std::vector<std::int32_t>{}
-                                               : part_->patchTriangleLocations(name);
+    const std::vector<std::int32_t> mine =
+        holdsPatch(name) ? part_->patchTriangleLocations(name) : std::vector<std::int32_t>{};
     std::vector<std::int32_t> locations;
     const auto counts = ranks_.allGather(bytesOf(std::vector<std::uint64_t>{mine.size()}));
     for (int r = 0; r < ranks_.size(); ++r) {
@@ -222,10 +223,10 @@ void RankCarrier::keepHeldHere(std::span<const Vec3> points, std::span<std::int3
     }
 }
 
-std::vector<PatchTriangle> RankCarrier::myPatchTriangles(const std::string& name) const {
-    for (const FoamPatch& patch : part_->mesh().patches)
-        if (patch.name == name && patch.size > 0) return part_->patchTriangles(name);
-    return {};
+bool RankCarrier::holdsPatch(const std::string& name) const {
+    const auto& patches = part_->mesh().patches;
+    return std::ranges::any_of(
+        patches, [&](const FoamPatch& patch) { return patch.name == name && patch.size > 0; });
 }
 
 } // namespace slides

@@ -64,8 +64,8 @@ public:
     int firstProcessorPatch() const { return static_cast<int>(boundaryNames_.size()); }
 
 private:
-    /// Patch name's triangles on this rank's part (none when its part has no face of it).
-    std::vector<PatchTriangle> myPatchTriangles(const std::string& name) const;
+    /// Whether this rank's part has a face of patch name.
+    bool holdsPatch(const std::string& name) const;
 
     std::filesystem::path caseDirectory_;
     RankCommunicator ranks_;

@@ -196,8 +196,9 @@ void runCase(const RunOptions& options, const RankCommunicator& ranks) {
         const MpiTally mpiBefore = RankCommunicator::tally();
         stepper.step();
         stepping += Clock::now() - stepStart;
-        steppingMpi.calls += RankCommunicator::tally().calls - mpiBefore.calls;
-        steppingMpi.seconds += RankCommunicator::tally().seconds - mpiBefore.seconds;
+        const MpiTally mpiAfter = RankCommunicator::tally();
+        steppingMpi.calls += mpiAfter.calls - mpiBefore.calls;
+        steppingMpi.seconds += mpiAfter.seconds - mpiBefore.seconds;
         if (stepper.time() >= nextFrame * (1 - 1e-12) || stepper.finished()) {
             writeFrame();
             while (nextFrame <= stepper.time() * (1 + 1e-12)) nextFrame += scene.output.interval;
