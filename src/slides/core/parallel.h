@@ -7,9 +7,27 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 namespace slides {
 
 inline constexpr std::ptrdiff_t minimumParallelBatch = 256;
+
+/// to = from, element by element on the threads (a copy of a cloud's array each step is bound
+/// by memory bandwidth, which one core does not saturate).
+template <typename T> void copyInParallel(const std::vector<T>& from, std::vector<T>& to) {
+    const auto count = static_cast<std::ptrdiff_t>(from.size());
+    to.resize(from.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < count; ++i) to[i] = from[i];
+}
+
+/// to = count copies of value, on the threads.
+template <typename T> void fillInParallel(std::vector<T>& to, std::size_t count, const T& value) {
+    to.resize(count);
+    const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (n >= minimumParallelBatch)
+    for (std::ptrdiff_t i = 0; i < n; ++i) to[i] = value;
+}
 
 } // namespace slides

@@ -1,5 +1,6 @@
 #include "slides/integrate/injector.h"
 
+#include "slides/core/parallel.h"
 #include "slides/core/random.h"
 
 #include <algorithm>
@@ -127,7 +128,11 @@ void Injector::drawStarts(std::span<const ParticleId> ids, const ParticleCloud& 
         locations_[k] = start.location;
     };
     if (!avoidOverlap_) {
-        for (std::size_t k = 0; k < count; ++k) keep(k, drawStart(ids[k], 0));
+        // Each draw is keyed by its particle's id: the same on any thread.
+        const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (n >= minimumParallelBatch)
+        for (std::ptrdiff_t k = 0; k < n; ++k)
+            keep(static_cast<std::size_t>(k), drawStart(ids[static_cast<std::size_t>(k)], 0));
         return;
     }
     constexpr std::uint32_t attempts = 64;
@@ -235,9 +240,14 @@ void Injector::add(std::span<const ParticleId> ids, double time, const CarrierFi
     if (avoidOverlap_ && !nearby_) nearby_.emplace(planeConstraintOf(carrier));
     const std::size_t count = ids.size();
     radii_.resize(count);
-    for (std::size_t k = 0; k < count; ++k)
-        radii_[k] = settings_.givesRows() ? settings_.rows[ids[k] - settings_.firstId].radius
-                                          : radius_.draw(settings_.injection.seed, ids[k]);
+    const auto n = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(static) if (n >= minimumParallelBatch)
+    for (std::ptrdiff_t k = 0; k < n; ++k) {
+        const ParticleId id = ids[static_cast<std::size_t>(k)];
+        radii_[static_cast<std::size_t>(k)] = settings_.givesRows()
+                                                  ? settings_.rows[id - settings_.firstId].radius
+                                                  : radius_.draw(settings_.injection.seed, id);
+    }
     drawStarts(ids, cloud);
     leaveToOtherRanks(ids, carrier);
     if (carrier.keepsLocations()) {

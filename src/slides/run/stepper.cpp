@@ -191,7 +191,7 @@ void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();
     injectors_.injectUntil(time_ + h, time_, carrier_, cloud_);
     // A particle injected at t_k inside the step flies only its remainder t + h − t_k.
-    stepLengths_.assign(cloud_.size(), h);
+    fillInParallel(stepLengths_, cloud_.size(), h);
     for (std::size_t i = alreadyInFlight; i < cloud_.size(); ++i)
         stepLengths_[i] = std::clamp(time_ + h - injectors_.injectionTime(cloud_.id[i]), 0.0, h);
     equipNewParticles(alreadyInFlight);
@@ -219,8 +219,8 @@ void Stepper::kickByCoulombForces(double) {
 }
 
 void Stepper::recordPathStarts(double) {
-    startPositions_ = cloud_.position;
-    startVelocities_ = cloud_.velocity;
+    copyInParallel(cloud_.position, startPositions_);
+    copyInParallel(cloud_.velocity, startVelocities_);
 }
 
 void Stepper::heat(double) {
