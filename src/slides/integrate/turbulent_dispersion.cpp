@@ -22,7 +22,10 @@ void TurbulentDispersion::perturb(ParticleCloud& cloud, CarrierSample& gas,
                               gas.turbulentKineticEnergy, gas.dissipationRate, cloud.radius,
                               stepLengths, fluctuations_, species.density, species.acceleration},
                              constants_, drag, bodyAcceleration, seed_);
-#pragma omp parallel for schedule(static) if (count >= minimumParallelBatch)
+    // After the eddy-interaction batch, only a sum a particle is left.
+    const std::ptrdiff_t parallelFrom =
+        model_ == DispersionModel::langevin ? minimumParallelBatch : minimumParallelSweep;
+#pragma omp parallel for schedule(static) if (count >= parallelFrom)
     for (std::ptrdiff_t n = 0; n < count; ++n) {
         const auto i = static_cast<std::size_t>(n);
         if (model_ == DispersionModel::langevin)

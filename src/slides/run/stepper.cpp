@@ -520,7 +520,7 @@ void Stepper::meetSurfaces(double h) {
         bool attention = false;
 #pragma omp parallel for schedule(static)                                                          \
     reduction(||                                                                                   \
-              : attention) if (count >= minimumParallelBatch)
+              : attention) if (count >= minimumParallelSweep)
         for (std::ptrdiff_t i = 0; i < count; ++i)
             attention = attention || !cloud_.position[i].allFinite() ||
                         !cloud_.velocity[i].allFinite() ||
