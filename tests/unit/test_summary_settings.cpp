@@ -73,13 +73,14 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(SummaryElectromagnetic, ReportsTheFieldsAndTheChargeModel) {
     // Off by default; on, the model, fields and charge model as given (physics/electromagnetic.h).
     EXPECT_EQ(settingsWith("")["physics"]["electromagnetic"]["model"], "none");
-    const nlohmann::json fields =
-        settingsWith("physics { electromagnetic { model lorentz; B (0 0 0.25); charge { model "
-                     "surface; value 2e-5; } } }")["physics"]["electromagnetic"];
+    const nlohmann::json fields = settingsWith(
+        "physics { electromagnetic { model lorentz; B (0 0 0.25); charge { model "
+        "surface; value 2e-5; oppositeSignFraction 0.25; } } }")["physics"]["electromagnetic"];
     EXPECT_EQ(fields["model"], "lorentz");
     EXPECT_EQ(fields["B"], nlohmann::json::array({0.0, 0.0, 0.25}));
     EXPECT_EQ(fields["charge"]["model"], "surface");
     EXPECT_EQ(fields["charge"]["value"], 2e-5);
+    EXPECT_EQ(fields["charge"]["oppositeSignFraction"], 0.25);
     EXPECT_EQ(fields["coulomb"]["model"], "none");
 }
 

@@ -113,6 +113,8 @@ TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
                                      Vec3(0, 0, 0.5),
                                      ChargeModel::fixed,
                                      1.3e-7,
+                                     0.0,
+                                     0,
                                      CoulombSettings{}};
     const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
                                           scene.fluid.density, scene.fluid.kinematicViscosity);

@@ -9,7 +9,10 @@
 //  - Stokes drag: the terminal drift v = (λ f + f × Ω)/(λ² + ω²), f = qE/m + λu (the steady
 //    state of dv/dt = f − λv + v × Ω), reached at any step, and the flow against a fine RK4
 //    integration of the same equation (an independent check of the closed form);
-//  - through the stepper: the Larmor orbit of a particle charged by either charge model.
+//  - through the stepper: the Larmor orbit of a particle charged by either charge model;
+//  - bipolar charging: a fraction of the particles charged −value, each sign drawn from the
+//    particle's id (the count of each sign within the binomial bound), and a bipolar cloud in a
+//    uniform E parting along ±E as x = ½ (qE/m) t², the same at 1 and 2 threads.
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
 #include "slides/integrate/lorentz_flow.h"
@@ -20,6 +23,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <omp.h>
 
 namespace slides {
 namespace {
@@ -142,10 +146,39 @@ TEST(ChargeModels, FixedOrProportionalToTheSurface) {
     ElectromagneticSettings settings;
     settings.model = ElectromagneticModel::lorentz;
     settings.chargeValue = 2e-6;
-    EXPECT_EQ(settings.chargeOf(1e-5), 2e-6);
+    EXPECT_EQ(settings.chargeOf(1e-5, 17), 2e-6);
     settings.charge = ChargeModel::surface;
-    EXPECT_NEAR(settings.chargeOf(1e-5), 2e-6 * 4 * pi * 1e-10, 1e-30);
+    EXPECT_NEAR(settings.chargeOf(1e-5, 17), 2e-6 * 4 * pi * 1e-10, 1e-30);
     EXPECT_FALSE(ElectromagneticSettings{}.on());
+}
+
+TEST(ChargeModels, AFractionOfTheParticlesCarriesTheOppositeSign) {
+    ElectromagneticSettings settings;
+    settings.model = ElectromagneticModel::lorentz;
+    settings.chargeValue = -3e-12; // the value's sign is the majority's
+    settings.seed = 11;
+    const int count = 40000;
+    for (const double fraction : {0.0, 0.3, 0.5, 1.0}) {
+        settings.oppositeSignFraction = fraction;
+        int opposite = 0;
+        for (ParticleId id = 0; id < count; ++id) {
+            const double q = settings.chargeOf(20e-6, id);
+            ASSERT_EQ(std::abs(q), 3e-12);
+            ASSERT_EQ(q, settings.chargeOf(20e-6, id)) << "a particle's sign is its id's";
+            opposite += q > 0;
+        }
+        // Binomial: mean N f, standard deviation √(N f (1 − f)) (≤ 100 here); 5σ.
+        const double sigma = std::sqrt(count * fraction * (1 - fraction));
+        EXPECT_NEAR(opposite, count * fraction, 5 * sigma + 1e-9) << "fraction " << fraction;
+    }
+    // Another seed draws other signs (about half of them differ at f = 0.5).
+    settings.oppositeSignFraction = 0.5;
+    ElectromagneticSettings reseeded = settings;
+    reseeded.seed = 12;
+    int differ = 0;
+    for (ParticleId id = 0; id < count; ++id)
+        differ += settings.chargeOf(20e-6, id) != reseeded.chargeOf(20e-6, id);
+    EXPECT_NEAR(differ, count / 2, 5 * std::sqrt(count / 4.0));
 }
 
 /// One particle (R = 50 µm, ρp = 2500) injected at rest at the origin, charged σ 4πR² with
@@ -163,7 +196,7 @@ Scene chargedParticleScene(double electric, double magnetic) {
 
 double chargeToMass(const Scene& scene) {
     const double radius = scene.particles.radius.value;
-    return scene.physics.electromagnetic.chargeOf(radius) /
+    return scene.physics.electromagnetic.chargeOfModel(radius) /
            (4.0 / 3.0 * pi * radius * radius * radius * scene.particles.density);
 }
 
@@ -186,6 +219,44 @@ TEST(ChargedParticleRun, DriftsAtEOverBWithoutGas) {
     EXPECT_NEAR(cloud.position[0].x() / travelled, 1.0, 1e-8);
     EXPECT_LT(std::abs(cloud.position[0].y()) / travelled, 1e-8);
     EXPECT_LT(cloud.velocity[0].norm() / drift, 1e-8);
+}
+
+TEST(ChargedParticleRun, ABipolarCloudPartsAlongTheElectricField) {
+    // 2000 particles at rest at the origin, no gas, E = (0 E 0): each moves y = ½ (qE/m) t²,
+    // up for +q, down for −q, its charge the one its id draws; the same at 1 and 2 threads.
+    Scene scene = chargedParticleScene(1.0, 0.0);
+    scene.carrier.type = CarrierType::none;
+    scene.particles.count = 2000;
+    scene.physics.electromagnetic.oppositeSignFraction = 0.4;
+    scene.physics.electromagnetic.seed = scene.injection.seed;
+    scene.time.dt = 1e-3;
+    scene.time.endTime = 0.05;
+    const double g = chargeToMass(scene) * 1.0; // |q|E/m
+    std::vector<ParticleCloud> clouds;
+    for (const int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        const NoGas gas;
+        Stepper stepper(scene, gas);
+        while (!stepper.finished()) stepper.step();
+        clouds.push_back(stepper.cloud());
+    }
+    omp_set_num_threads(omp_get_num_procs());
+    const ParticleCloud& cloud = clouds[0];
+    ASSERT_EQ(cloud.size(), 2000u);
+    const double t = scene.time.endTime, travelled = 0.5 * g * t * t;
+    int down = 0;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const double q = scene.physics.electromagnetic.chargeOf(50e-6, cloud.id[i]);
+        ASSERT_EQ(cloud.charge[i], q);
+        const double sign = q > 0 ? 1.0 : -1.0;
+        // The start lies within the nozzle's 1e-15 m of the origin (3e-10 of the way).
+        ASSERT_NEAR(cloud.position[i].y(), sign * travelled, 1e-12 * travelled + 1e-15)
+            << "particle " << i;
+        down += q < 0;
+    }
+    EXPECT_NEAR(down, 800, 5 * std::sqrt(2000 * 0.4 * 0.6)); // about 40 % charged −value
+    EXPECT_EQ(clouds[1].charge, cloud.charge);
+    EXPECT_EQ(clouds[1].position, cloud.position);
 }
 
 TEST(ChargedParticleRun, ReachesTheStokesTerminalDriftInUniformGas) {

@@ -37,6 +37,12 @@ const test::BrokenCase limitCases[] = {
      "    gravity     (0 -9.81 0);\n"
      "    electromagnetic { model lorentz; coulomb { model shifted; cutoff 1e-300; } }",
      1, "key 'physics.electromagnetic.coulomb.cutoff': must be at least 1e-09"},
+    {"oppositeSignFractionAboveOne", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; charge { value 1e-15; oppositeSignFraction 1.5; } }",
+     1,
+     "key 'physics.electromagnetic.charge.oppositeSignFraction': must lie in [0, 1] (a fraction "
+     "of the particles)"},
     {"permittivityBelowTheVacuums", "    gravity     (0 -9.81 0);",
      "    gravity     (0 -9.81 0);\n"
      "    electromagnetic { model lorentz; coulomb { model shifted; permittivity 0.5; } }",

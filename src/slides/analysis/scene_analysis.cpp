@@ -474,7 +474,7 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
         double shortest = INFINITY;
         for (const double radius : {radiusMin_, radiusMax_})
             shortest =
-                std::min(shortest, coulombTime(charged.coulomb, charged.chargeOf(radius),
+                std::min(shortest, coulombTime(charged.coulomb, charged.chargeOfModel(radius),
                                                sphereMass(radius, resolved.particles.density),
                                                std::min(2 * radius, charged.coulomb.cutoff)));
         if (std::isfinite(shortest))

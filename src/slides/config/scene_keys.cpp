@@ -452,6 +452,10 @@ std::vector<KeyDeclaration> declareKeys() {
          "charge density [C/m²])."},
         {"physics.electromagnetic.charge.value", K::scalar, "C or C/m^2", "0", {}, R::any,
          "The charge (fixed) or surface charge density (surface)."},
+        {"physics.electromagnetic.charge.oppositeSignFraction", K::scalar, "-", "0", {},
+         R::nonNegative,
+         "The expected fraction of particles charged −value instead of value, in [0, 1] "
+         "(bipolar charging); each particle's sign is drawn from injection.seed and its id."},
         {"physics.electromagnetic.coulomb", K::dictionary, "-", "-", {}, R::any,
          "Coulomb forces between the charged particles (Eq. 2.94, physics/coulomb.h); not "
          "chosen by the scene analysis."},

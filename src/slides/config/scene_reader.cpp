@@ -796,7 +796,7 @@ void leaveUnsteadyForcesOff(PhysicsSettings& physics, const std::string& because
 
 /// physics.electromagnetic; its exact flow replaces the Maxey–Riley step's, so the unsteady
 /// forces stay off (an `auto` one among them is left unavailable).
-void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
+void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics, std::uint64_t seed) {
     ElectromagneticSettings& fields = physics.electromagnetic;
     const std::string base = "physics.electromagnetic.";
     fields.model = *valueNamed(electromagneticModelNames(), keys.word(base + "model"));
@@ -804,6 +804,11 @@ void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics) {
     fields.magneticField = keys.vector(base + "B");
     fields.charge = *valueNamed(chargeModelNames(), keys.word(base + "charge.model"));
     fields.chargeValue = keys.scalar(base + "charge.value");
+    fields.oppositeSignFraction = keys.scalar(base + "charge.oppositeSignFraction");
+    if (!(fields.oppositeSignFraction >= 0 && fields.oppositeSignFraction <= 1))
+        keys.fail(base + "charge.oppositeSignFraction", "must lie in [0, 1] (a fraction of the "
+                                                        "particles)");
+    fields.seed = seed;
     fields.coulomb.model = *valueNamed(coulombModelNames(), keys.word(base + "coulomb.model"));
     fields.coulomb.cutoff = keys.scalar(base + "coulomb.cutoff");
     fields.coulomb.permittivity = keys.scalar(base + "coulomb.permittivity");
@@ -1164,7 +1169,7 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
     scene.physics.autoThreshold = keys.scalar("physics.autoThreshold");
     readUnsteadyForces(keys, scene);
     readDispersionAndHeat(keys, scene);
-    readElectromagnetic(keys, scene.physics);
+    readElectromagnetic(keys, scene.physics, scene.injection.seed);
 
     if (scene.carrier.type == CarrierType::none)
         keys.require("time.dt", "for carrier type none (no gas for the scene analysis)");

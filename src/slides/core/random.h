@@ -12,7 +12,7 @@
 namespace slides {
 
 /// Purpose of a draw, so independent events of one particle never share numbers.
-enum class RandomPurpose : std::uint32_t { injection = 1, radius = 2, eddy = 3 };
+enum class RandomPurpose : std::uint32_t { injection = 1, radius = 2, eddy = 3, chargeSign = 4 };
 
 class RandomStream {
 public:

@@ -14,7 +14,7 @@ ChargedMotion::ChargedMotion(const ElectromagneticSettings& fields, const DragPa
 void ChargedMotion::charge(ParticleCloud& cloud, std::size_t first) const {
     cloud.charge.resize(cloud.size());
     for (std::size_t i = first; i < cloud.size(); ++i)
-        cloud.charge[i] = fields_.chargeOf(cloud.radius[i]);
+        cloud.charge[i] = fields_.chargeOf(cloud.radius[i], cloud.id[i]);
 }
 
 LorentzRates ChargedMotion::ratesOf(const ParticleCloud& cloud, std::size_t i,

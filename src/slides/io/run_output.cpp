@@ -123,7 +123,7 @@ void RunOutput::writeFrame(const RunSnapshot& snapshot) {
             gathered.temperature.push_back(arrival.temperature);
             gathered.angularVelocity.push_back(arrival.angularVelocity);
             if (electromagnetic_.on())
-                gathered.charge.push_back(electromagnetic_.chargeOf(arrival.radius));
+                gathered.charge.push_back(electromagnetic_.chargeOf(arrival.radius, arrival.id));
         }
         frame = gathered.view(fields_, heating_, spinning_, electromagnetic_.on());
     }

@@ -3,7 +3,9 @@
 //
 // Reference: Section 2.7.1, Eq. 2.93. A particle's charge is fixed (the same q for every
 // particle) or proportional to its surface, q = σ 4πR² (a surface charge density σ, as
-// triboelectric and corona charging give). Per unit mass the force is g_E + v × Ω with
+// triboelectric and corona charging give); a fraction of the particles may carry the opposite
+// sign (bipolar charging, as tribocharging of a powder against itself gives), each particle's
+// sign drawn from its id. Per unit mass the force is g_E + v × Ω with
 // g_E = qE/m and the signed gyration vector Ω = qB/m (|Ω| the cyclotron frequency, Larmor radius
 // |v⊥|/|Ω|); integrate/lorentz_flow.h integrates it exactly together with the drag. The charged
 // particles' Coulomb forces on each other (Eq. 2.94–2.97) are physics/coulomb.h's.
@@ -11,13 +13,15 @@
 //     physics { electromagnetic { model lorentz;            // none | lorentz
 //                                 E (0 0 1e5);               // V/m
 //                                 B (0 0 0.5);               // T
-//                                 charge { model surface; value 1e-5; } } }  // fixed: C; surface:
-//                                 C/m²
+//                                 charge { model surface; value 1e-5;   // fixed: C; surface: C/m²
+//                                          oppositeSignFraction 0.3; } } }
 //
 // How to add a charge model: an enumerator, its name in chargeModelNames() and its case in
-// ElectromagneticSettings::chargeOf().
+// ElectromagneticSettings::chargeOfModel().
 #pragma once
 
+#include "slides/core/particle_cloud.h"
+#include "slides/core/random.h"
 #include "slides/core/vector.h"
 #include "slides/physics/coulomb.h"
 
@@ -56,13 +60,25 @@ struct ElectromagneticSettings {
     Vec3 electricField = Vec3::Zero(); ///< E [V/m]
     Vec3 magneticField = Vec3::Zero(); ///< B [T]
     ChargeModel charge = ChargeModel::fixed;
-    double chargeValue = 0;  ///< q [C] (fixed) or σ [C/m²] (surface)
+    double chargeValue = 0; ///< q [C] (fixed) or σ [C/m²] (surface)
+    /// The expected fraction of particles whose charge has the sign opposite to chargeValue's.
+    double oppositeSignFraction = 0;
+    std::uint64_t seed = 0;  ///< of the signs' draws (injection.seed)
     CoulombSettings coulomb; ///< the particles' forces on each other (physics/coulomb.h)
 
     bool on() const { return model != ElectromagneticModel::none; }
 
-    /// The charge of a particle of the given radius [C].
-    double chargeOf(double radius) const {
+    /// The charge of particle id of the given radius [C]: its sign drawn from (seed, id), so the
+    /// same on any thread, rank or restart.
+    double chargeOf(double radius, ParticleId id) const {
+        const double q = chargeOfModel(radius);
+        if (oppositeSignFraction == 0) return q;
+        RandomStream random(seed, id, RandomPurpose::chargeSign);
+        return random.uniform() < oppositeSignFraction ? -q : q;
+    }
+
+    /// The charge model's charge of a particle of the given radius [C], before its sign draw.
+    double chargeOfModel(double radius) const {
         switch (charge) {
         case ChargeModel::fixed: return chargeValue;
         case ChargeModel::surface: return chargeValue * 4 * std::numbers::pi * radius * radius;
