@@ -257,6 +257,16 @@ TEST(ParallelRefusals, ErrorOnOneRankEndsEveryRank) {
     expectRefused("brokenPart", 2, "brokenPart/processor1/800/U");
 }
 
+TEST(ParallelRefusals, InteractionsAcrossRanksAtTheirKeys) {
+    // Pairs split over two ranks would need ghost copies (run/run_case.cpp).
+    expectRefused("colliding", 2,
+                  "key 'collisions.model': colliding particles (ghosts across ranks) is not "
+                  "supported in parallel runs yet");
+    expectRefused("coulomb", 2,
+                  "key 'physics.electromagnetic.coulomb.model': Coulomb forces between particles "
+                  "(ghosts across ranks) is not supported in parallel runs yet");
+}
+
 TEST(ParallelRefusals, NozzleOnNoRank) {
     expectRefused("nozzleOutside", 2, "key 'nozzle.radius': the nozzle disc");
 }
