@@ -12,6 +12,7 @@
 #pragma once
 
 #include "slides/core/box.h"
+#include "slides/core/parallel.h"
 #include "slides/core/vector.h"
 
 #include <algorithm>
@@ -19,10 +20,6 @@
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace slides {
 
@@ -155,31 +152,18 @@ private:
 template <typename Found, typename Test>
 std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
     const auto cells = static_cast<std::ptrdiff_t>(grid.occupiedCellCount());
-    constexpr std::ptrdiff_t chunk = 4096;
-    std::vector<std::vector<Found>> perThread;
-#pragma omp parallel
-    {
-#ifdef _OPENMP
-#pragma omp single
-        perThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
-        auto& found = perThread[static_cast<std::size_t>(omp_get_thread_num())];
-#else
-        perThread.resize(1);
-        auto& found = perThread[0];
-#endif
-        // Static blocks in thread order: joining the threads' lists keeps the cells' order.
-#pragma omp for schedule(static)
-        for (std::ptrdiff_t first = 0; first < cells; first += chunk) {
+    constexpr std::ptrdiff_t chunk = 4096; // cells
+    return collectInOrder<Found>(
+        (cells + chunk - 1) / chunk,
+        [&](std::ptrdiff_t block, std::vector<Found>& found) {
+            const std::ptrdiff_t first = block * chunk;
             const auto last = static_cast<std::size_t>(std::min(first + chunk, cells));
             grid.forEachSlotPairInCells(static_cast<std::size_t>(first), last,
                                         [&](std::uint32_t a, std::uint32_t b) {
                                             if (auto pair = test(a, b)) found.push_back(*pair);
                                         });
-        }
-    }
-    std::vector<Found> all;
-    for (const auto& found : perThread) all.insert(all.end(), found.begin(), found.end());
-    return all;
+        },
+        2);
 }
 
 } // namespace slides

@@ -138,17 +138,26 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
         if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
         return std::optional<Entry>({a, static_cast<std::int32_t>(b), {}, false});
     });
-    for (std::uint32_t i = 0; i < cloud.size(); ++i)
-        for (const std::size_t s : softWalls_) {
-            const Surface& wall = surfaces_[s];
-            if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
-                entries_.push_back({i, -1 - static_cast<std::int32_t>(s), {}, false});
-        }
+    // The walls each particle comes within reach of, in the particles' order.
+    const std::vector<Entry> nearWalls = collectInOrder<Entry>(
+        static_cast<std::ptrdiff_t>(softWalls_.empty() ? 0 : cloud.size()),
+        [&](std::ptrdiff_t n, std::vector<Entry>& out) {
+            const auto i = static_cast<std::uint32_t>(n);
+            for (const std::size_t s : softWalls_) {
+                const Surface& wall = surfaces_[s];
+                if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
+                    out.push_back({i, -1 - static_cast<std::int32_t>(s), {}, false});
+            }
+        });
+    entries_.insert(entries_.end(), nearWalls.begin(), nearWalls.end());
 
     // Touching contacts keep their springs through the rebuild.
-    builtIds_ = cloud.id;
-    builtPositions_ = cloud.position;
-    for (Entry& entry : entries_) {
+    copyInParallel(cloud.id, builtIds_);
+    copyInParallel(cloud.position, builtPositions_);
+    const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
+#pragma omp parallel for schedule(static) if (entryCount >= minimumParallelBatch)
+    for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
+        Entry& entry = entries_[static_cast<std::size_t>(e)];
         const ContactSpring key = springOf(entry);
         const auto found = std::lower_bound(handed.begin(), handed.end(), key, byIds);
         if (found != handed.end() && !byIds(key, *found)) {
@@ -208,30 +217,20 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
     const bool conducts =
         settings_.conduction.model != ContactConduction::none && !cloud.temperature.empty();
     long begun = 0;
-    const auto entryCount = static_cast<std::ptrdiff_t>(entries_.size());
-    std::vector<std::vector<std::uint32_t>> loadedPerThread(1);
-#pragma omp parallel reduction(+ : begun) if (entryCount >= minimumParallelBatch)
-    {
-#ifdef _OPENMP
-#pragma omp single
-        loadedPerThread.resize(static_cast<std::size_t>(omp_get_num_threads()));
-        auto& loadedHere = loadedPerThread[static_cast<std::size_t>(omp_get_thread_num())];
-#else
-        auto& loadedHere = loadedPerThread[0];
-#endif
-        // Static blocks in thread order: joined, the threads' lists ascend.
-#pragma omp for schedule(static)
-        for (std::ptrdiff_t e = 0; e < entryCount; ++e) {
-            Entry& entry = entries_[e];
+    // The loaded entries, ascending.
+    loadedEntries_ = collectInOrder<std::uint32_t>(
+        static_cast<std::ptrdiff_t>(entries_.size()),
+        [&](std::ptrdiff_t e, std::vector<std::uint32_t>& loaded) {
+            Entry& entry = entries_[static_cast<std::size_t>(e)];
             // A contact that parted in this step takes the load of its parting once, if its law
             // has one (partingNormalForce); the pair functions reset its spring.
             const bool mayPart = entry.touching && mayPull(law_);
             if (apart(entry) && !mayPart) {
                 if (entry.touching || entry.parting)
                     entry = {entry.first, entry.second, {}, false, false};
-                continue;
+                return;
             }
-            ContactLoad& load = loads_[e];
+            ContactLoad& load = loads_[static_cast<std::size_t>(e)];
             const ContactPair pair = pairOf(entry, cloud);
             if (entry.second >= 0) {
                 load = sphereSphereLoad(pair, law_, sphere(entry.first),
@@ -249,6 +248,7 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
                                        cloud.temperature[entry.first]);
             if (touching && !entry.touching) {
                 if (entry.second >= 0) {
+#pragma omp atomic
                     ++begun;
                 } else {
 #pragma omp atomic
@@ -257,13 +257,9 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
             }
             entry.touching = touching;
             entry.parting = !touching && mayPart;
-            if (touching || entry.parting) loadedHere.push_back(static_cast<std::uint32_t>(e));
-        }
-    }
+            if (touching || entry.parting) loaded.push_back(static_cast<std::uint32_t>(e));
+        });
     collisions_ += begun;
-    loadedEntries_.clear();
-    for (const auto& loaded : loadedPerThread)
-        loadedEntries_.insert(loadedEntries_.end(), loaded.begin(), loaded.end());
     collectLoaded(cloud);
 
     // With temperatures tracked, each contact's dissipation heats its particles alike (Eq. 2.117).
