@@ -6,13 +6,16 @@
 #include "../support/gas_scenes.h"
 #include "../support/test_scenes.h"
 #include "slides/carrier/no_gas.h"
+#include "slides/core/particle_order.h"
 #include "slides/physics/contact_pair.h"
 #include "slides/physics/soft_contact.h"
 #include "slides/run/stepper.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #ifdef _OPENMP
@@ -230,7 +233,8 @@ ParticleCloud granularGas() {
 }
 
 struct GasRun {
-    ParticleCloud cloud;
+    ParticleCloud cloud;                 ///< sorted by id
+    std::vector<ParticleId> memoryOrder; ///< the ids as the run left them in memory
     long contacts = 0;
     long listBuilds = 0;
 };
@@ -262,7 +266,15 @@ GasRun runGas(int steps, double skin, int threads, int restartAfter = -1,
 #ifdef _OPENMP
     omp_set_num_threads(omp_get_num_procs());
 #endif
-    return {stepper->cloud(), stepper->collisions(), stepper->softSpheres()->listBuilds()};
+    // The memory order follows the contact grid's cells (core/particle_order.h), whose edge
+    // depends on the skin; each particle's numbers do not.
+    ParticleCloud cloud = stepper->cloud();
+    const std::vector<ParticleId> memoryOrder = cloud.id;
+    std::vector<std::uint32_t> byId(cloud.size());
+    std::iota(byId.begin(), byId.end(), 0u);
+    std::sort(byId.begin(), byId.end(), [&](auto a, auto b) { return cloud.id[a] < cloud.id[b]; });
+    reorderParticles(cloud, byId);
+    return {cloud, memoryOrder, stepper->collisions(), stepper->softSpheres()->listBuilds()};
 }
 
 Vec3 linearMomentum(const ParticleCloud& cloud) {
@@ -313,6 +325,11 @@ TEST(SoftSphereStepper, GranularGasIsTheSameForAnyThreadCountSkinOrRestart) {
         EXPECT_EQ(other->cloud.angularVelocity, oneThread.cloud.angularVelocity);
         EXPECT_EQ(other->contacts, oneThread.contacts);
     }
+    // Ordered in memory by the same cells every 1000 steps, the same way on any thread count
+    // and across the restart, and no longer in the order of the ids.
+    EXPECT_EQ(twoThreads.memoryOrder, oneThread.memoryOrder);
+    EXPECT_EQ(restarted.memoryOrder, oneThread.memoryOrder);
+    EXPECT_FALSE(std::is_sorted(oneThread.memoryOrder.begin(), oneThread.memoryOrder.end()));
     // Without a skin the list is rebuilt every step; with 0.2 R, every few steps.
     EXPECT_EQ(noSkin.listBuilds, 1500);
     EXPECT_LT(oneThread.listBuilds, 1500 / 4);

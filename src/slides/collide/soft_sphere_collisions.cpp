@@ -71,9 +71,12 @@ void SoftSphereCollisions::halfKick(ParticleCloud& cloud,
 
 bool SoftSphereCollisions::loadedInPlace(const ParticleCloud& cloud) const {
     if (!loadsListed_ || cloud.contactForce.size() != cloud.size()) return false;
-    for (std::size_t k = 0; k < loaded_.size(); ++k)
-        if (loaded_[k] >= cloud.size() || cloud.id[loaded_[k]] != loadedIds_[k]) return false;
-    return true;
+    const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
+    bool moved = false;
+#pragma omp parallel for schedule(static) reduction(|| : moved) if (count >= minimumParallelSweep)
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+        moved = moved || loaded_[k] >= cloud.size() || cloud.id[loaded_[k]] != loadedIds_[k];
+    return !moved;
 }
 
 bool SoftSphereCollisions::listIsStale(const ParticleCloud& cloud) const {
@@ -119,13 +122,11 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     std::sort(handed.begin(), handed.end(), byIds);
     pendingSprings_.clear();
 
-    const double largestRadius =
-        cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
-    skin_ = settings_.softSphere.neighbourSkin * largestRadius;
-
+    double cellSize = 0;
+    std::tie(skin_, cellSize) = skinAndCellSize(cloud);
     // A particle that has left the domain (however far, or to a state that is not finite)
     // touches nothing: it escapes at the step's end.
-    grid_.build(cloud.position, 2 * largestRadius + skin_, domain_);
+    grid_.build(cloud.position, cellSize, domain_);
     // The search reads positions and radii in the grid's cell order, from memory in order.
     slotRadius_.resize(grid_.size());
     for (std::size_t slot = 0; slot < grid_.size(); ++slot)
@@ -168,6 +169,26 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     }
     indexEntriesByParticle();
     ++listBuilds_;
+}
+
+std::pair<double, double> SoftSphereCollisions::skinAndCellSize(const ParticleCloud& cloud) const {
+    const double largestRadius =
+        cloud.empty() ? 0 : *std::max_element(cloud.radius.begin(), cloud.radius.end());
+    const double skin = settings_.softSphere.neighbourSkin * largestRadius;
+    return {skin, 2 * largestRadius + skin};
+}
+
+std::vector<std::uint32_t> SoftSphereCollisions::cellOrder(const ParticleCloud& cloud) {
+    grid_.build(cloud.position, skinAndCellSize(cloud).second, domain_);
+    std::vector<std::uint32_t> order(grid_.size());
+    std::vector<std::uint8_t> placed(cloud.size(), 0);
+    for (std::size_t slot = 0; slot < grid_.size(); ++slot) {
+        order[slot] = grid_.pointAt(slot);
+        placed[order[slot]] = 1;
+    }
+    for (std::uint32_t i = 0; i < cloud.size(); ++i)
+        if (!placed[i]) order.push_back(i);
+    return order;
 }
 
 void SoftSphereCollisions::indexEntriesByParticle() {
@@ -302,27 +323,32 @@ void SoftSphereCollisions::updateLoads(ParticleCloud& cloud, double dt) {
 void SoftSphereCollisions::collectLoaded(ParticleCloud& cloud) {
     // The last call's loads are zeroed where it left them, or everywhere if the cloud changed.
     if (loadedInPlace(cloud)) {
-        for (const std::uint32_t i : loaded_) {
-            cloud.contactForce[i] = Vec3::Zero();
-            cloud.contactTorque[i] = Vec3::Zero();
+        const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelSweep)
+        for (std::ptrdiff_t k = 0; k < count; ++k) {
+            cloud.contactForce[loaded_[k]] = Vec3::Zero();
+            cloud.contactTorque[loaded_[k]] = Vec3::Zero();
         }
     } else {
-        std::fill(cloud.contactForce.begin(), cloud.contactForce.end(), Vec3::Zero());
-        std::fill(cloud.contactTorque.begin(), cloud.contactTorque.end(), Vec3::Zero());
+        fillInParallel(cloud.contactForce, cloud.size(), Vec3(Vec3::Zero()));
+        fillInParallel(cloud.contactTorque, cloud.size(), Vec3(Vec3::Zero()));
     }
     // The loaded entries' bodies, ascending and each once.
-    isLoaded_.assign(cloud.size(), 0);
+    fillInParallel(isLoaded_, cloud.size(), std::uint8_t{0});
     for (const std::uint32_t e : loadedEntries_) {
         isLoaded_[entries_[e].first] = 1;
         if (entries_[e].second >= 0) isLoaded_[static_cast<std::size_t>(entries_[e].second)] = 1;
     }
-    loaded_.clear();
-    loadedIds_.clear();
-    for (std::uint32_t i = 0; i < cloud.size(); ++i)
-        if (isLoaded_[i]) {
-            loaded_.push_back(i);
-            loadedIds_.push_back(cloud.id[i]);
-        }
+    loaded_ = collectInOrder<std::uint32_t>(
+        static_cast<std::ptrdiff_t>(cloud.size()),
+        [&](std::ptrdiff_t i, auto& out) {
+            if (isLoaded_[i]) out.push_back(static_cast<std::uint32_t>(i));
+        },
+        minimumParallelSweep);
+    loadedIds_.resize(loaded_.size());
+    const auto count = static_cast<std::ptrdiff_t>(loaded_.size());
+#pragma omp parallel for schedule(static) if (count >= minimumParallelSweep)
+    for (std::ptrdiff_t k = 0; k < count; ++k) loadedIds_[k] = cloud.id[loaded_[k]];
     loadsListed_ = true;
 }
 

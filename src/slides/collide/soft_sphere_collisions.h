@@ -40,6 +40,7 @@
 #include "slides/surfaces/surface_settings.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace slides {
@@ -71,6 +72,12 @@ public:
     /// contactTorque; the springs are stretched over the step dt.
     void updateLoads(ParticleCloud& cloud, double dt);
 
+    /// The particles' indices in the order of the contact grid's cells (x slowest; within a
+    /// cell, as they are now), then those outside the domain in the order they are: particles
+    /// near each other in space, near in memory (core/particle_order.h). Leaves the list as
+    /// it is.
+    std::vector<std::uint32_t> cellOrder(const ParticleCloud& cloud);
+
     /// Pair contacts begun so far.
     long collisions() const { return collisions_; }
     /// Contacts with each surface begun in the last updateLoads (zero for surfaces that are not
@@ -95,6 +102,9 @@ private:
     };
 
     bool listIsStale(const ParticleCloud& cloud) const;
+    /// The neighbour skin for the cloud's largest radius, and the edge of the grid's cells that
+    /// finds the pairs within it [m].
+    std::pair<double, double> skinAndCellSize(const ParticleCloud& cloud) const;
     /// Whether loaded_ lists every particle with a load, each still at its index.
     bool loadedInPlace(const ParticleCloud& cloud) const;
     /// Zeroes the loads of the particles that had one, and lists those that have one now.

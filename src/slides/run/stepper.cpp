@@ -159,8 +159,9 @@ void Stepper::buildStages() {
     const bool gas = scene_.carrier.type != CarrierType::none;
     stages_.clear();
     if (gas && !carrier_.steady()) stages_.push_back(&Stepper::holdCarrierTimes);
-    if (carrier_.keepsLocations()) stages_.push_back(&Stepper::orderInMemory);
+    if (carrier_.keepsLocations() && !softSpheres_) stages_.push_back(&Stepper::orderInMemory);
     stages_.push_back(&Stepper::inject);
+    if (softSpheres_) stages_.push_back(&Stepper::orderByContactCells);
     if (plane_) stages_.push_back(&Stepper::holdInPlane);
     if (!scene_.particles.alike()) stages_.push_back(&Stepper::holdSpeciesValues);
     if (softSpheres_) stages_.push_back(&Stepper::kickByContacts);
@@ -186,6 +187,17 @@ void Stepper::buildStages() {
 void Stepper::holdCarrierTimes(double h) { carrier_.holdInterval(time_, time_ + h); }
 
 void Stepper::orderInMemory(double) { orderByLocation(cloud_, steps_); }
+
+void Stepper::orderByContactCells(double) {
+    if (steps_ % cellOrderInterval != 0) return;
+    const std::vector<std::uint32_t> order = softSpheres_->cellOrder(cloud_);
+    for (std::uint32_t k = 0; k < order.size(); ++k)
+        if (order[k] != k) {
+            reorderParticles(cloud_, order);
+            reorderParticleArray(stepLengths_, order); // the new particles' remainders
+            return;
+        }
+}
 
 void Stepper::inject(double h) {
     const std::size_t alreadyInFlight = cloud_.size();

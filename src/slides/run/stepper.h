@@ -9,6 +9,9 @@
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
 //      steady carriers); in a parallel run each enters only on the rank whose part of the mesh
 //      holds it;
+//   1a. with soft spheres, every few steps the cloud (new particles included) is put in the
+//      order of the contact grid's cells instead, so that each thread's particles are those of
+//      its contacts;
 //   1b. where the injectors' species differ, each particle's density, body acceleration (and
 //      with heat transfer specific heat) is held for the stages that take them
 //      (integrate/species_values.h);
@@ -134,6 +137,9 @@ private:
     void holdCarrierTimes(double h);
     /// 0. every few steps, the cloud in the order of its carrier locations.
     void orderInMemory(double h);
+    /// Every cellOrderInterval steps, after the new particles have entered: the cloud in the
+    /// order of the contact grid's cells (core/particle_order.h).
+    void orderByContactCells(double h);
     /// 1. particles due before t + h enter; their step lengths.
     void inject(double h);
     /// The arrays of the models that are on sized for the particles entered at [from, size),
