@@ -39,6 +39,8 @@ public:
 
     /// Occupied cells of the grid, for splitting forEachPairInCells among threads.
     std::size_t occupiedCellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
+    /// The first slot of occupied cell c (c = occupiedCellCount(): one past the last slot).
+    std::uint32_t firstSlotOf(std::size_t cell) const { return cellStart_[cell]; }
 
     /// The point in slot s of the cell order (slots of one cell are consecutive), and where it
     /// is: the points gathered in that order, so that a search over slots reads memory in order.
@@ -146,11 +148,12 @@ private:
 };
 
 /// What test(s, t) finds for every pair of slots the grid offers (forEachSlotPairInCells; the
-/// points are grid.pointAt(s), pointAt(t)), the pairs for which it returns a value: searched in
-/// parallel over blocks of cells and joined in cell order, so the list is the same for any
-/// number of threads.
-template <typename Found, typename Test>
-std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
+/// points are grid.pointAt(s), pointAt(t)), the pairs for which it returns a value, and after
+/// each block of cells' pairs what single(s, found) appends for each slot s of those cells:
+/// searched in parallel over blocks of cells and joined in cell order, so the list is the same
+/// for any number of threads, and a thread's share of it is a share of space.
+template <typename Found, typename Test, typename Single>
+std::vector<Found> collectPairsAndSingles(const CellGrid& grid, Test test, Single single) {
     const auto cells = static_cast<std::ptrdiff_t>(grid.occupiedCellCount());
     constexpr std::ptrdiff_t chunk = 4096; // cells
     return collectInOrder<Found>(
@@ -162,8 +165,17 @@ std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
                                         [&](std::uint32_t a, std::uint32_t b) {
                                             if (auto pair = test(a, b)) found.push_back(*pair);
                                         });
+            for (std::uint32_t slot = grid.firstSlotOf(static_cast<std::size_t>(first));
+                 slot < grid.firstSlotOf(last); ++slot)
+                single(slot, found);
         },
         2);
+}
+
+/// collectPairsAndSingles without singles.
+template <typename Found, typename Test>
+std::vector<Found> collectPairs(const CellGrid& grid, Test test) {
+    return collectPairsAndSingles<Found>(grid, test, [](std::uint32_t, std::vector<Found>&) {});
 }
 
 } // namespace slides

@@ -131,26 +131,26 @@ void SoftSphereCollisions::buildList(const ParticleCloud& cloud) {
     slotRadius_.resize(grid_.size());
     for (std::size_t slot = 0; slot < grid_.size(); ++slot)
         slotRadius_[slot] = cloud.radius[grid_.pointAt(slot)];
-    entries_ = collectPairs<Entry>(grid_, [&](std::uint32_t s, std::uint32_t t) {
-        const double reach = slotRadius_[s] + slotRadius_[t] + skin_;
-        if ((grid_.positionAt(s) - grid_.positionAt(t)).squaredNorm() >= reach * reach)
-            return std::optional<Entry>();
-        std::uint32_t a = grid_.pointAt(s), b = grid_.pointAt(t);
-        if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
-        return std::optional<Entry>({a, static_cast<std::int32_t>(b), {}, false});
-    });
-    // The walls each particle comes within reach of, in the particles' order.
-    const std::vector<Entry> nearWalls = collectInOrder<Entry>(
-        static_cast<std::ptrdiff_t>(softWalls_.empty() ? 0 : cloud.size()),
-        [&](std::ptrdiff_t n, std::vector<Entry>& out) {
-            const auto i = static_cast<std::uint32_t>(n);
+    // The pairs, and the walls each particle comes within reach of, in the grid's cell order.
+    entries_ = collectPairsAndSingles<Entry>(
+        grid_,
+        [&](std::uint32_t s, std::uint32_t t) {
+            const double reach = slotRadius_[s] + slotRadius_[t] + skin_;
+            if ((grid_.positionAt(s) - grid_.positionAt(t)).squaredNorm() >= reach * reach)
+                return std::optional<Entry>();
+            std::uint32_t a = grid_.pointAt(s), b = grid_.pointAt(t);
+            if (cloud.id[a] > cloud.id[b]) std::swap(a, b);
+            return std::optional<Entry>({a, static_cast<std::int32_t>(b), {}, false});
+        },
+        [&](std::uint32_t slot, std::vector<Entry>& found) {
             for (const std::size_t s : softWalls_) {
                 const Surface& wall = surfaces_[s];
-                if ((cloud.position[i] - wall.point).dot(wall.normal) < cloud.radius[i] + skin_)
-                    out.push_back({i, -1 - static_cast<std::int32_t>(s), {}, false});
+                if ((grid_.positionAt(slot) - wall.point).dot(wall.normal) <
+                    slotRadius_[slot] + skin_)
+                    found.push_back(
+                        {grid_.pointAt(slot), -1 - static_cast<std::int32_t>(s), {}, false});
             }
         });
-    entries_.insert(entries_.end(), nearWalls.begin(), nearWalls.end());
 
     // Touching contacts keep their springs through the rebuild.
     copyInParallel(cloud.id, builtIds_);
