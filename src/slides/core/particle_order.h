@@ -34,8 +34,9 @@ inline constexpr long particleOrderInterval = 5;
 /// Steps between reorders by contact cell, the first at the first step (a later one makes the
 /// neighbour list be built again). Measured on tools/bench/granular-gas's scene, two threads,
 /// interleaved runs: over 1000 steps, every 100 steps cost 2.6 % more than every 500; over 5000,
-/// every 1000 was 0.85 times the time without reordering, and within the noise of reordering
-/// at the first step only. (LIGGGHTS sorts its atoms every 1000 steps by default.)
+/// every 1000 was within the noise of reordering at the first step only (and 0.85 times the
+/// time of the build before any reordering, whose loaded particles were listed serially).
+/// (LIGGGHTS sorts its atoms every 1000 steps by default.)
 inline constexpr long cellOrderInterval = 1000;
 
 /// Orders every array of cloud (ParticleCloud::forEachArray, and modelState) by ascending

@@ -9,9 +9,9 @@
 //      (the carrier is still sampled at t and t + h/2 for the whole batch: exact for the
 //      steady carriers); in a parallel run each enters only on the rank whose part of the mesh
 //      holds it;
-//   1a. with soft spheres, every few steps the cloud (new particles included) is put in the
-//      order of the contact grid's cells instead, so that each thread's particles are those of
-//      its contacts;
+//   1a. with soft spheres, at the first step and every cellOrderInterval steps the cloud (new
+//      particles included) is put in the order of the contact grid's cells instead, so that
+//      each thread's particles are those of its contacts;
 //   1b. where the injectors' species differ, each particle's density, body acceleration (and
 //      with heat transfer specific heat) is held for the stages that take them
 //      (integrate/species_values.h);
