@@ -84,6 +84,25 @@ TEST(SummaryElectromagnetic, ReportsTheFieldsAndTheChargeModel) {
     EXPECT_EQ(fields["coulomb"]["model"], "none");
 }
 
+TEST(SummaryElectromagnetic, ReportsTheCoilsAndTheMagnetisation) {
+    // physics/current_loop.h and physics/magnetic_force.h: each coil by its name, the axis made
+    // a unit vector; the magnetisation model and susceptibility as given.
+    EXPECT_EQ(settingsWith("")["physics"]["electromagnetic"]["magnetisation"]["model"], "none");
+    const nlohmann::json fields =
+        settingsWith("physics { electromagnetic { model lorentz; coils { upper { centre (0 0 "
+                     "0.1); axis (0 0 2); radius 0.05; current 2000; } lower { radius 0.02; "
+                     "current -300; } } magnetisation { model linear; susceptibility 0.25; } } "
+                     "}")["physics"]["electromagnetic"];
+    EXPECT_EQ(fields["coils"]["upper"]["centre"], nlohmann::json::array({0.0, 0.0, 0.1}));
+    EXPECT_EQ(fields["coils"]["upper"]["axis"], nlohmann::json::array({0.0, 0.0, 1.0}));
+    EXPECT_EQ(fields["coils"]["upper"]["radius"], 0.05);
+    EXPECT_EQ(fields["coils"]["upper"]["current"], 2000.0);
+    EXPECT_EQ(fields["coils"]["lower"]["centre"], nlohmann::json::array({0.0, 0.0, 0.0}));
+    EXPECT_EQ(fields["coils"]["lower"]["current"], -300.0);
+    EXPECT_EQ(fields["magnetisation"]["model"], "linear");
+    EXPECT_EQ(fields["magnetisation"]["susceptibility"], 0.25);
+}
+
 TEST(SummaryElectromagnetic, ReportsTheCoulombTruncation) {
     // physics/coulomb.h: the model, cut-off and relative permittivity as given.
     const nlohmann::json coulomb =

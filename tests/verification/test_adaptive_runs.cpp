@@ -108,14 +108,11 @@ TEST(AdaptiveRuns, ChargedParticleFollowsTheExactLorentzDragFlow) {
     // with it to TOL = 1e-8 of the particle's path length.
     Scene scene = test::singleParticleScene();
     scene.physics.drag = DragModel::stokes;
-    scene.physics.electromagnetic = {ElectromagneticModel::lorentz,
-                                     Vec3(1, 0, 0),
-                                     Vec3(0, 0, 0.5),
-                                     ChargeModel::fixed,
-                                     1.3e-7,
-                                     0.0,
-                                     0,
-                                     CoulombSettings{}};
+    ElectromagneticSettings& fields = scene.physics.electromagnetic;
+    fields.model = ElectromagneticModel::lorentz;
+    fields.electricField = Vec3(1, 0, 0);
+    fields.magneticField = Vec3(0, 0, 0.5);
+    fields.chargeValue = 1.3e-7;
     const double tau = stokesResponseTime(scene.particles.density, scene.particles.radius.value,
                                           scene.fluid.density, scene.fluid.kinematicViscosity);
     scene.time.dt = tau;

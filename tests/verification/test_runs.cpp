@@ -266,6 +266,29 @@ const test::BrokenCase brokenCases[] = {
      "    gravity     (0 -9.81 0);\n    electromagnetic { coulomb { model shifted; } }", 1,
      "key 'physics.electromagnetic.coulomb.model': Coulomb forces act between charged "
      "particles, which physics.electromagnetic.model lorentz gives"},
+    {"magnetisationWithoutCoils", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; B (0 0 1); magnetisation { model linear; "
+     "susceptibility 0.5; } }",
+     1,
+     "key 'physics.electromagnetic.magnetisation.model': a uniform B pulls no magnetisable "
+     "particle"},
+    {"coilsWithoutTheLorentzStep", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { coils { a { radius 0.05; current 100; } } }",
+     1,
+     "key 'physics.electromagnetic.coils': the fields act through "
+     "physics.electromagnetic.model lorentz"},
+    {"susceptibilityOfNoMaterial", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; coils { a { radius 0.05; current 100; } }\n"
+     "        magnetisation { model linear; susceptibility -1; } }",
+     2, "key 'physics.electromagnetic.magnetisation.susceptibility': must be above −1"},
+    {"coilsWithAdaptiveRungeKutta", "    integrator      exponentialMidpoint;",
+     "    integrator      adaptiveRungeKutta;\n}\n"
+     "physics { electromagnetic { model lorentz; coils { a { radius 0.05; current 100; } } } }\n"
+     "time {",
+     0, "key 'time.integrator': the coils' fields vary along a step"},
     {"latticeOfTooFewSites", "    mode            rate;",
      "    mode            lattice;\n    latticeCoeffs { spacing 1e-3; sites (10 10 10); }", 1,
      "key 'injection.latticeCoeffs.sites': hold fewer sites than particles.count"},

@@ -480,6 +480,22 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
         if (std::isfinite(shortest))
             limits.push_back({"coulombTime", shortest / stepsPerCoulombTime});
     }
+    if (charged.on() && !charged.uniform()) {
+        // The fastest a particle crosses the coils' fields: the reference speed, or the speed a
+        // magnetisable particle gains falling into the strongest field, √(|χm|/(µ0 µr ρp)) B
+        // (its energy χm B²/(2 µ0 µr) a unit volume, Eq. 2.110), B at the coils' centres.
+        double smallestCoil = INFINITY, strongest = charged.magneticField.norm();
+        for (const CurrentLoop& coil : charged.coils) {
+            smallestCoil = std::min(smallestCoil, coil.radius);
+            strongest += vacuumPermeability * std::abs(coil.current) / (2 * coil.radius);
+        }
+        const double chi = charged.magnetisable() ? charged.susceptibility : 0.0;
+        const double falling = std::sqrt(std::abs(chi) / (vacuumPermeability * (1 + chi) *
+                                                          resolved.particles.density)) *
+                               strongest;
+        const double speed = std::max(referenceSpeed_, falling);
+        if (speed > 0) limits.push_back({"coilField", smallestCoil / (stepsPerCoilRadius * speed)});
+    }
     limits.push_back({"outputInterval", resolved.output.interval});
     limits.push_back({"endTime", resolved.time.endTime});
     const auto smallest =

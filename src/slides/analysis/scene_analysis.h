@@ -30,7 +30,9 @@
 // to dt = 2 T_L), a quarter of the mean time between collisions (collisions), a
 // stepsPerSoftContact-th of the shortest Hertz contact (softSphere: the smallest spheres at
 // U_ref, Eq. 2.59), a stepsPerCoulombTime-th of the Coulomb time scale of two touching
-// particles (physics/coulomb.h: the smallest and the largest), the output interval; each at the 1st
+// particles (physics/coulomb.h: the smallest and the largest), a stepsPerCoilRadius-th of the
+// time to cross the smallest coil's radius (coils: at the reference speed, or the speed of a
+// magnetisable particle falling into the coils' field), the output interval; each at the 1st
 // percentile of the path points, so that one point does not set it. A scene without gas (carrier
 // none) is not traced: its auto terms stay off and its time step is the one given.
 //
@@ -54,6 +56,9 @@ inline constexpr double stepsPerSoftContact = 20;
 /// Steps over the Coulomb time scale √(m s³/(k q²)) of two touching particles (Coulomb forces;
 /// velocity Verlet's energy error there is then about 0.6 % a close pair).
 inline constexpr double stepsPerCoulombTime = 10;
+/// Steps over the time to cross the smallest coil's radius (physics.electromagnetic.coils; the
+/// field's midpoint rule is second order in the step over that time).
+inline constexpr double stepsPerCoilRadius = 20;
 
 /// One row of the decision table.
 struct TermDecision {

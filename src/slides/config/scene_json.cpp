@@ -189,7 +189,15 @@ nlohmann::json sceneSettings(const Scene& scene) {
         {"coulomb",
          {{"model", nameOf(coulombModelNames(), charged.coulomb.model)},
           {"cutoff", charged.coulomb.cutoff},
-          {"permittivity", charged.coulomb.permittivity}}}};
+          {"permittivity", charged.coulomb.permittivity}}},
+        {"magnetisation",
+         {{"model", nameOf(magnetisationModelNames(), charged.magnetisation)},
+          {"susceptibility", charged.susceptibility}}}};
+    for (const CurrentLoop& coil : charged.coils)
+        settings["physics"]["electromagnetic"]["coils"][coil.name] = {{"centre", vec(coil.centre)},
+                                                                      {"axis", vec(coil.axis)},
+                                                                      {"radius", coil.radius},
+                                                                      {"current", coil.current}};
     settings["time"] = {{"dt", scene.time.dt},
                         {"endTime", scene.time.endTime},
                         {"stopWhenAllDone", scene.time.stopWhenAllDone},

@@ -48,6 +48,14 @@ public:
         return value;
     }
 
+    /// The keys of the dictionary at path, in their order (none if it is not there).
+    std::vector<std::string> keysIn(const std::string& path) const {
+        std::string leaf;
+        const Dictionary* parent = parentOf(path, leaf);
+        if (!parent || !parent->has(leaf) || !parent->isDict(leaf)) return {};
+        return parent->subDict(leaf).keys();
+    }
+
     std::optional<double> optionalScalar(const std::string& path) const {
         if (!has(path)) return std::nullopt;
         return scalar(path);
@@ -794,6 +802,30 @@ void leaveUnsteadyForcesOff(PhysicsSettings& physics, const std::string& because
             automatic.unavailable = because;
 }
 
+/// physics.electromagnetic.coils and .magnetisation.
+void readCoilsAndMagnetisation(const KeyReader& keys, ElectromagneticSettings& fields) {
+    const std::string base = "physics.electromagnetic.";
+    for (const std::string& name : keys.keysIn(base + "coils")) {
+        const std::string coil = base + "coils." + name;
+        fields.coils.push_back({name, keys.vector(coil + ".centre"), keys.direction(coil + ".axis"),
+                                keys.scalar(coil + ".radius"), keys.scalar(coil + ".current")});
+    }
+    fields.magnetisation =
+        *valueNamed(magnetisationModelNames(), keys.word(base + "magnetisation.model"));
+    fields.susceptibility = keys.scalar(base + "magnetisation.susceptibility");
+    if (!(fields.susceptibility > -1))
+        keys.fail(base + "magnetisation.susceptibility", "must be above −1 (µr = 1 + χm > 0)");
+    if (fields.magnetisable() && fields.uniform())
+        keys.fail(base + "magnetisation.model",
+                  "a uniform B pulls no magnetisable particle (Eq. 2.110): give the field's "
+                  "gradient by physics.electromagnetic.coils");
+    const bool needsLorentzStep = !fields.uniform() || fields.magnetisable();
+    if (needsLorentzStep && !fields.on())
+        keys.fail(base + (fields.magnetisable() ? "magnetisation.model" : "coils"),
+                  "the fields act through physics.electromagnetic.model lorentz (the charge may "
+                  "be zero)");
+}
+
 /// physics.electromagnetic; its exact flow replaces the Maxey–Riley step's, so the unsteady
 /// forces stay off (an `auto` one among them is left unavailable).
 void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics, std::uint64_t seed) {
@@ -812,6 +844,7 @@ void readElectromagnetic(const KeyReader& keys, PhysicsSettings& physics, std::u
     fields.coulomb.model = *valueNamed(coulombModelNames(), keys.word(base + "coulomb.model"));
     fields.coulomb.cutoff = keys.scalar(base + "coulomb.cutoff");
     fields.coulomb.permittivity = keys.scalar(base + "coulomb.permittivity");
+    readCoilsAndMagnetisation(keys, fields);
     // The particles carry their charges with the Lorentz step (integrate/charged_motion.h).
     if (fields.coulomb.on() && !fields.on())
         keys.fail(base + "coulomb.model", "Coulomb forces act between charged particles, which "
@@ -1195,6 +1228,11 @@ Scene sceneFromDictionary(const Dictionary& dictionary,
                       "set them off, or use exponentialMidpoint");
         leaveUnsteadyForcesOff(scene.physics, "not with time.integrator adaptiveRungeKutta");
     }
+    if (!scene.physics.electromagnetic.uniform() &&
+        scene.time.integrator == Integrator::adaptiveRungeKutta)
+        keys.fail("time.integrator",
+                  "the coils' fields vary along a step, which adaptiveRungeKutta's sub-steps do "
+                  "not sample: set exponentialMidpoint");
     if (scene.physics.electromagnetic.on() &&
         scene.time.integrator != Integrator::exponentialMidpoint &&
         scene.time.integrator != Integrator::adaptiveRungeKutta)

@@ -12,6 +12,11 @@
 // each particle's own ρp sets its mass m = 4/3 π R³ ρp (so q/m) and its τ, and its own body
 // acceleration joins qE/m.
 //
+// With coils the fields vary in space: E, B and the magnetisable particles' force
+// χm/(µ0 µr ρp) (∇B)ᵀ B (Eq. 2.110) are taken at the step's start for the half step and at the
+// predicted midpoint for the whole step, with gas and without (then the explicit midpoint rule
+// of the flow: second order, no longer exact).
+//
 //     physics { electromagnetic { model lorentz; E (0 0 1e5); B (0 0 0.5);
 //                                 charge { model fixed; value 1e-12; } } }
 #pragma once
@@ -49,11 +54,27 @@ public:
     void fly(ParticleCloud& cloud, const std::vector<double>& stepLengths,
              const SpeciesValues& species) const;
 
-    /// Particle i's qE/m and qB/m (for adaptiveRungeKutta, which takes them in its own steps).
+    /// Particle i's qE/m and qB/m in uniform fields (for adaptiveRungeKutta, which takes them
+    /// in its own steps).
     LorentzRates ratesOf(const ParticleCloud& cloud, std::size_t i,
                          const SpeciesValues& species) const;
 
 private:
+    /// What the flow takes for particle i at x: qE/m with the body and magnetic accelerations,
+    /// and Ω = qB/m.
+    struct Forcing {
+        Vec3 acceleration;
+        Vec3 gyration;
+    };
+    Forcing forcingAt(const ParticleCloud& cloud, std::size_t i, const SpeciesValues& species,
+                      const Vec3& x) const;
+    /// Particle i's q/m [C/kg].
+    double chargeToMassOf(const ParticleCloud& cloud, std::size_t i,
+                          const SpeciesValues& species) const;
+    /// Particle i's ρp.
+    double densityOf(std::size_t i, const SpeciesValues& species) const {
+        return species.alike() ? drag_.particleDensity : species.density[i];
+    }
     ElectromagneticSettings fields_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;

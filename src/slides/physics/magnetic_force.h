@@ -38,6 +38,13 @@ inline Vec3 paramagneticForce(double susceptibility, double volume, const Vec3& 
     return momentForce(inducedMoment(susceptibility, volume, field), fieldGradient);
 }
 
+/// The force per unit mass on a linear sphere of density ρp [kg/m³] (Eq. 2.110 over m = ρp V)
+/// [m/s²].
+inline Vec3 paramagneticAcceleration(double susceptibility, double density, const Vec3& field,
+                                     const Mat3& fieldGradient) {
+    return paramagneticForce(susceptibility, 1 / density, field, fieldGradient);
+}
+
 /// B_z on the axis of a circular loop of radius a [m] carrying current I [A], at distance z
 /// from its plane [T].
 inline double loopAxisField(double current, double loopRadius, double z) {
