@@ -9,6 +9,7 @@
 //    flux through the circle of radius ρ, is constant (Φ = 2πρ A_φ, A_φ in Jackson's closed
 //    form, Eq. 5.37 — independent of the field code).
 #include "../support/test_scenes.h"
+#include "slides/analysis/scene_analysis.h"
 #include "slides/carrier/no_gas.h"
 #include "slides/physics/current_loop.h"
 #include "slides/physics/electromagnetic.h"
@@ -47,9 +48,9 @@ double particleMass(const Scene& scene) {
 }
 
 struct BeadFlight {
-    double energyError;  ///< max |ΔE| over the largest kinetic energy
-    double lowest;       ///< the lowest z reached [m]
-    double offAxis;      ///< the largest distance from the axis [m]
+    double energyError; ///< max |ΔE| over the largest kinetic energy
+    double lowest;      ///< the lowest z reached [m]
+    double offAxis;     ///< the largest distance from the axis [m]
 };
 
 /// A bead of χm = 0.5 falls from z = a above the coil's plane (at rest) for 2 s: through the
@@ -61,9 +62,9 @@ BeadFlight flyBead(double dt) {
     fields.susceptibility = 0.5;
     scene.time.dt = dt;
     scene.time.endTime = 2.0;
-    const double potential = fields.susceptibility / (2 * vacuumPermeability *
-                                                      (1 + fields.susceptibility) *
-                                                      scene.particles.density);
+    const double potential =
+        fields.susceptibility /
+        (2 * vacuumPermeability * (1 + fields.susceptibility) * scene.particles.density);
     const auto energy = [&](const Vec3& x, const Vec3& v) {
         return 0.5 * v.squaredNorm() - potential * fields.magneticFieldAt(x).field.squaredNorm();
     };
@@ -136,8 +137,8 @@ double angularMomentumError(double dt) {
     const double start = momentum(Vec3::Zero(), Vec3::Zero());
     double error = 0;
     while (!stepper.finished()) {
-        error = std::max(error, std::abs(momentum(cloud.position.at(0), cloud.velocity.at(0)) -
-                                         start));
+        error =
+            std::max(error, std::abs(momentum(cloud.position.at(0), cloud.velocity.at(0)) - start));
         stepper.step();
     }
     EXPECT_LT(cloud.position.at(0).z(), -4 * loopRadius) << "through the coil";
@@ -150,6 +151,37 @@ TEST(CoilRun, AChargedParticleThroughTheCoilKeepsItsCanonicalAngularMomentum) {
     const double coarse = angularMomentumError(1e-3), fine = angularMomentumError(5e-4);
     EXPECT_LT(coarse, 1e-4);
     EXPECT_NEAR(coarse / fine, 4.0, 0.4);
+}
+
+TEST(CoilTimeStep, ResolvesTheCrossingOfTheSmallestCoil) {
+    // Without time.dt, a twentieth of the time to cross the smallest coil's radius (1 cm here):
+    // at the reference speed in a 10 m/s stream; in a 1 cm/s stream, at the 0.259 m/s a bead of
+    // χm = 0.5 gains falling into the 0.0251 T at the coils' centres, √(χm/(µ0 µr ρp)) B.
+    for (const bool magnetisable : {false, true}) {
+        Scene scene = coilScene(0.0);
+        CurrentLoop small = scene.physics.electromagnetic.coils.front();
+        small.radius = 0.01;
+        small.current = 0;
+        scene.physics.electromagnetic.coils.push_back(small);
+        if (magnetisable) {
+            scene.physics.electromagnetic.magnetisation = MagnetisationModel::linear;
+            scene.physics.electromagnetic.susceptibility = 0.5;
+        }
+        scene.carrier.type = CarrierType::analyticJet; // any gas: the analysis traces it
+        scene.time.dt = 0;
+        const double stream = magnetisable ? 0.01 : 10.0;
+        const test::UniformFlow gas(Vec3(stream, 0, 0));
+        const SceneAnalysis analysis = analyseScene(scene, gas);
+        const double speed =
+            magnetisable ? std::sqrt(0.5 / (vacuumPermeability * 1.5 * scene.particles.density)) *
+                               vacuumPermeability * current / (2 * loopRadius)
+                         : stream;
+        EXPECT_EQ(analysis.timeStepLimitedBy, "coilField");
+        const double limit = 0.01 / (stepsPerCoilRadius * speed);
+        // Rounded down to two digits: at most 10 % below.
+        EXPECT_LE(analysis.suggestedTimeStep, limit) << "magnetisable " << magnetisable;
+        EXPECT_GT(analysis.suggestedTimeStep, 0.9 * limit) << "magnetisable " << magnetisable;
+    }
 }
 
 } // namespace
