@@ -59,12 +59,12 @@ BeadFlight flyBead(double dt) {
     Scene scene = coilScene(0.0);
     ElectromagneticSettings& fields = scene.physics.electromagnetic;
     fields.magnetisation = MagnetisationModel::linear;
-    fields.susceptibility = 0.5;
+    scene.particles.susceptibility = 0.5;
     scene.time.dt = dt;
     scene.time.endTime = 2.0;
     const double potential =
-        fields.susceptibility /
-        (2 * vacuumPermeability * (1 + fields.susceptibility) * scene.particles.density);
+        scene.particles.susceptibility /
+        (2 * vacuumPermeability * (1 + scene.particles.susceptibility) * scene.particles.density);
     const auto energy = [&](const Vec3& x, const Vec3& v) {
         return 0.5 * v.squaredNorm() - potential * fields.magneticFieldAt(x).field.squaredNorm();
     };
@@ -165,7 +165,7 @@ TEST(CoilTimeStep, ResolvesTheCrossingOfTheSmallestCoil) {
         scene.physics.electromagnetic.coils.push_back(small);
         if (magnetisable) {
             scene.physics.electromagnetic.magnetisation = MagnetisationModel::linear;
-            scene.physics.electromagnetic.susceptibility = 0.5;
+            scene.particles.susceptibility = 0.5;
         }
         scene.carrier.type = CarrierType::analyticJet; // any gas: the analysis traces it
         scene.time.dt = 0;

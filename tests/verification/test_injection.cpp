@@ -300,6 +300,13 @@ TEST(SeveralInjectors, BadInjectorsAreRefusedAtTheirKey) {
     EXPECT_EQ(refusal("injectors { a { model cone; count 10; rate 1e3; coneCoeffs { "
                       "innerHalfAngle 20; outerHalfAngle 10; speed 5; } } }"),
               "injectors.a.coneCoeffs.outerHalfAngle: must be larger than innerHalfAngle");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; susceptibility 0.5; } }"),
+              "injectors.a.susceptibility: acts with physics.electromagnetic.magnetisation.model "
+              "linear");
+    EXPECT_EQ(refusal("injectors { a { count 10; rate 1e3; susceptibility -1; } }\nphysics { "
+                      "electromagnetic { model lorentz; coils { c { radius 0.01; current 1; } } "
+                      "magnetisation { model linear; } } }"),
+              "injectors.a.susceptibility: must be above −1 (µr = 1 + χm > 0)");
     EXPECT_EQ(refusal("injectors { a { model sprinkler; } }"),
               "injectors.a.model: unknown model 'sprinkler'; valid model names are:\n    disc\n"
               "    cone\n    file\n    patch\n    ensemble");

@@ -284,6 +284,12 @@ const test::BrokenCase brokenCases[] = {
      "    electromagnetic { model lorentz; coils { a { radius 0.05; current 100; } }\n"
      "        magnetisation { model linear; susceptibility -1; } }",
      2, "key 'physics.electromagnetic.magnetisation.susceptibility': must be above −1"},
+    {"susceptibilityWithoutMagnetisation", "    gravity     (0 -9.81 0);",
+     "    gravity     (0 -9.81 0);\n"
+     "    electromagnetic { model lorentz; magnetisation { susceptibility 0.5; } }",
+     1,
+     "key 'physics.electromagnetic.magnetisation.susceptibility': acts with "
+     "physics.electromagnetic.magnetisation.model linear"},
     {"coilsWithAdaptiveRungeKutta", "    integrator      exponentialMidpoint;",
      "    integrator      adaptiveRungeKutta;\n}\n"
      "physics { electromagnetic { model lorentz; coils { a { radius 0.05; current 100; } } } }\n"

@@ -489,10 +489,14 @@ void PathEstimator::limitTimeStep(SceneAnalysis& analysis, const Scene& resolved
             smallestCoil = std::min(smallestCoil, coil.radius);
             strongest += vacuumPermeability * std::abs(coil.current) / (2 * coil.radius);
         }
-        const double chi = charged.magnetisable() ? charged.susceptibility : 0.0;
-        const double falling = std::sqrt(std::abs(chi) / (vacuumPermeability * (1 + chi) *
-                                                          resolved.particles.density)) *
-                               strongest;
+        double falling = 0; // the fastest species
+        if (charged.magnetisable())
+            for (const ParticleSpecies& species : resolved.particles.allSpecies())
+                falling =
+                    std::max(falling, std::sqrt(std::abs(species.susceptibility) /
+                                                (vacuumPermeability * (1 + species.susceptibility) *
+                                                 species.density)) *
+                                          strongest);
         const double speed = std::max(referenceSpeed_, falling);
         if (speed > 0) limits.push_back({"coilField", smallestCoil / (stepsPerCoilRadius * speed)});
     }

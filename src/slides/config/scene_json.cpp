@@ -136,7 +136,8 @@ nlohmann::json sceneSettings(const Scene& scene) {
     for (const ParticleSpecies& species : scene.particles.species)
         settings["particles"]["species"].push_back({{"density", species.density},
                                                     {"material", material(species.material)},
-                                                    {"specificHeat", species.specificHeat}});
+                                                    {"specificHeat", species.specificHeat},
+                                                    {"susceptibility", species.susceptibility}});
     settings["injection"] = {{"mode", nameOf(injectionModeNames(), scene.injection.mode)},
                              {"rate", scene.injection.rate},
                              {"crossSpanSpeed", scene.injection.crossSpanSpeed},
@@ -192,7 +193,7 @@ nlohmann::json sceneSettings(const Scene& scene) {
           {"permittivity", charged.coulomb.permittivity}}},
         {"magnetisation",
          {{"model", nameOf(magnetisationModelNames(), charged.magnetisation)},
-          {"susceptibility", charged.susceptibility}}}};
+          {"susceptibility", scene.particles.susceptibility}}}};
     for (const CurrentLoop& coil : charged.coils)
         settings["physics"]["electromagnetic"]["coils"][coil.name] = {{"centre", vec(coil.centre)},
                                                                       {"axis", vec(coil.axis)},

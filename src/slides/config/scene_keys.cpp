@@ -304,6 +304,9 @@ std::vector<KeyDeclaration> declareKeys() {
          "Surface energy γ (Eq. 2.74)."},
         {"injectors.*.specificHeat", K::scalar, "J/(kg K)", "-", {}, R::positive,
          "Specific heat c_p of this injector's particles; default particles.specificHeat."},
+        {"injectors.*.susceptibility", K::scalar, "-", "-", {}, R::any,
+         "Magnetic susceptibility χm of this injector's particles, above −1; default "
+         "physics.electromagnetic.magnetisation.susceptibility (needs its model linear)."},
         {"injectors.*.reinjectEscaped", K::boolean, "-", "no", {}, R::any,
          "Its escaped particles replaced by new ones of its own, as injection.reinjectEscaped "
          "(models disc, cone, patch)."},

@@ -638,13 +638,22 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
 }
 
 /// The particle species of the injectors (`injectors.NAME.density`, `.material {}`,
-/// `.specificHeat`, each defaulting to the particles' own; a file's densities per row,
+/// `.specificHeat`, `.susceptibility`, each defaulting to the particles' own; a file's
+/// densities per row,
 /// integrate/particle_file.h); every model takes each particle's own. Injectors all alike leave
 /// the particles one species, theirs.
 void readSpecies(const KeyReader& keys, Scene& scene) {
     ParticleSettings& particles = scene.particles;
+    const ElectromagneticSettings& fields = scene.physics.electromagnetic;
+    const std::string susceptibility = "physics.electromagnetic.magnetisation.susceptibility";
+    particles.susceptibility = keys.scalar(susceptibility);
+    if (keys.has(susceptibility) && !fields.magnetisable())
+        keys.fail(susceptibility, "acts with physics.electromagnetic.magnetisation.model linear");
+    if (!(particles.susceptibility > -1))
+        keys.fail(susceptibility, "must be above −1 (µr = 1 + χm > 0)");
     if (scene.injectors.empty()) return;
-    const ParticleSpecies own{particles.density, particles.material, particles.specificHeat};
+    const ParticleSpecies own{particles.density, particles.material, particles.specificHeat,
+                              particles.susceptibility};
     std::vector<ParticleSpecies> species;
     std::vector<std::int32_t> ofInjector;
     std::vector<std::vector<std::int32_t>> ofRow;
@@ -665,6 +674,13 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
                             &MaterialSettings::yieldStress, &MaterialSettings::surfaceEnergy})
             if (given.*member > 0) mine.material.*member = given.*member;
         mine.specificHeat = keys.optionalScalar(base + ".specificHeat").value_or(own.specificHeat);
+        if (keys.has(base + ".susceptibility") && !fields.magnetisable())
+            keys.fail(base + ".susceptibility",
+                      "acts with physics.electromagnetic.magnetisation.model linear");
+        mine.susceptibility =
+            keys.optionalScalar(base + ".susceptibility").value_or(own.susceptibility);
+        if (!(mine.susceptibility > -1))
+            keys.fail(base + ".susceptibility", "must be above −1 (µr = 1 + χm > 0)");
         std::vector<std::int32_t> rows;
         if (injector.rowsGiveDensity) {
             for (const ParticleRow& row : injector.rows) {
@@ -683,6 +699,7 @@ void readSpecies(const KeyReader& keys, Scene& scene) {
     particles.density = species.front().density;
     particles.material = species.front().material;
     particles.specificHeat = species.front().specificHeat;
+    particles.susceptibility = species.front().susceptibility;
     if (species.size() == 1) return; // alike: the particles' values are the injectors'
     particles.species = std::move(species);
     particles.speciesOfInjector = std::move(ofInjector);
@@ -812,9 +829,6 @@ void readCoilsAndMagnetisation(const KeyReader& keys, ElectromagneticSettings& f
     }
     fields.magnetisation =
         *valueNamed(magnetisationModelNames(), keys.word(base + "magnetisation.model"));
-    fields.susceptibility = keys.scalar(base + "magnetisation.susceptibility");
-    if (!(fields.susceptibility > -1))
-        keys.fail(base + "magnetisation.susceptibility", "must be above −1 (µr = 1 + χm > 0)");
     if (fields.magnetisable() && fields.uniform())
         keys.fail(base + "magnetisation.model",
                   "a uniform B pulls no magnetisable particle (Eq. 2.110): give the field's "

@@ -8,8 +8,9 @@
 namespace slides {
 
 ChargedMotion::ChargedMotion(const ElectromagneticSettings& fields, const DragParameters& drag,
-                             const Vec3& bodyAcceleration)
-    : fields_(fields), drag_(drag), bodyAcceleration_(bodyAcceleration) {}
+                             const Vec3& bodyAcceleration, double susceptibility)
+    : fields_(fields), drag_(drag), bodyAcceleration_(bodyAcceleration),
+      susceptibility_(susceptibility) {}
 
 void ChargedMotion::charge(ParticleCloud& cloud, std::size_t first) const {
     cloud.charge.resize(cloud.size());
@@ -38,8 +39,9 @@ ChargedMotion::Forcing ChargedMotion::forcingAt(const ParticleCloud& cloud, std:
     if (fields_.uniform()) return {acceleration, chargeToMass * fields_.magneticField};
     const MagneticFieldSample magnetic = fields_.magneticFieldAt(x);
     if (fields_.magnetisable())
-        acceleration += paramagneticAcceleration(fields_.susceptibility, densityOf(i, species),
-                                                 magnetic.field, magnetic.gradient);
+        acceleration += paramagneticAcceleration(
+            species.susceptibility.empty() ? susceptibility_ : species.susceptibility[i],
+            densityOf(i, species), magnetic.field, magnetic.gradient);
     return {acceleration, chargeToMass * magnetic.field};
 }
 

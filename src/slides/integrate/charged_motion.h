@@ -34,8 +34,9 @@ namespace slides {
 
 class ChargedMotion {
 public:
+    /// susceptibility: the particles' χm where they are alike (ParticleSettings).
     ChargedMotion(const ElectromagneticSettings& fields, const DragParameters& drag,
-                  const Vec3& bodyAcceleration);
+                  const Vec3& bodyAcceleration, double susceptibility);
 
     /// Charges the particles from index first on (those that just entered).
     void charge(ParticleCloud& cloud, std::size_t first) const;
@@ -78,6 +79,7 @@ private:
     ElectromagneticSettings fields_;
     DragParameters drag_;
     Vec3 bodyAcceleration_;
+    double susceptibility_;
     /// Particle i's drag, of its own density where species differ.
     DragParameters dragOf(std::size_t i, const SpeciesValues& species) const {
         return species.alike() ? drag_ : drag_.withDensity(species.density[i]);

@@ -94,11 +94,12 @@ struct RadiusDistribution {
 };
 
 /// What a particle is made of, where injectors differ (`injectors.NAME.density`, `.material`,
-/// `.specificHeat`; what an injector does not give is the particles' own).
+/// `.specificHeat`, `.susceptibility`; what an injector does not give is the particles' own).
 struct ParticleSpecies {
     double density = 0; ///< ρp [kg/m³]
     MaterialSettings material;
-    double specificHeat = 0; ///< c_p [J/(kg K)]
+    double specificHeat = 0;   ///< c_p [J/(kg K)]
+    double susceptibility = 0; ///< χm [-], magnetisation
     bool operator==(const ParticleSpecies&) const = default;
 };
 
@@ -126,6 +127,9 @@ struct ParticleSettings {
     double specificHeat = 0;         ///< c_p [J/(kg K)], heat transfer
     double thermalConductivity = 0;  ///< K_p [W/(m K)], for the Biot number; 0: not given
     double injectionTemperature = 0; ///< θ at injection [K], heat transfer
+    /// χm [-] with physics.electromagnetic.magnetisation (its susceptibility, or the first
+    /// injector's).
+    double susceptibility = 0;
     /// Particle species where injectors, or the rows of a file injector, differ in what their
     /// particles are made of: empty when every particle is alike (the values above, and nothing
     /// costs more); else one entry each distinct species, species[0] the first injector's (its
@@ -173,7 +177,9 @@ struct ParticleSettings {
     }
     /// Every species (the particles' own when alike), e.g. for the smallest response time.
     std::vector<ParticleSpecies> allSpecies() const {
-        return alike() ? std::vector<ParticleSpecies>{{density, material, specificHeat}} : species;
+        return alike()
+                   ? std::vector<ParticleSpecies>{{density, material, specificHeat, susceptibility}}
+                   : species;
     }
 };
 

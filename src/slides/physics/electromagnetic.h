@@ -88,8 +88,8 @@ struct ElectromagneticSettings {
     std::uint64_t seed = 0;         ///< of the signs' draws (injection.seed)
     CoulombSettings coulomb;        ///< the particles' forces on each other (physics/coulomb.h)
     std::vector<CurrentLoop> coils; ///< their fields join the uniform B
+    /// The particles' χm is theirs (ParticleSettings::susceptibility, ParticleSpecies).
     MagnetisationModel magnetisation = MagnetisationModel::none;
-    double susceptibility = 0; ///< χm of the particles' material (linear magnetisation)
 
     bool on() const { return model != ElectromagneticModel::none; }
     /// Whether E and B are the same everywhere (no coils).

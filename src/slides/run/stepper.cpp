@@ -50,7 +50,8 @@ Stepper::Stepper(const Scene& scene, const CarrierField& carrier, RankExchange* 
         if (maxeyRiley_)
             throw std::logic_error("electromagnetic forces with unsteady forces: refused when "
                                    "the scene is read (config/scene_reader.cpp)");
-        chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_);
+        chargedMotion_.emplace(scene.physics.electromagnetic, drag_, bodyAcceleration_,
+                               scene.particles.susceptibility);
         if (scene.physics.electromagnetic.coulomb.on())
             coulomb_.emplace(scene.physics.electromagnetic.coulomb, scene.particles.density,
                              scene.domain);
@@ -485,17 +486,21 @@ void Stepper::holdSpeciesValues(double) {
     particleDensities_.resize(count);
     particleAccelerations_.resize(count);
     if (heating_.on()) particleSpecificHeats_.resize(count);
+    const bool magnetisable = scene_.physics.electromagnetic.magnetisable();
+    if (magnetisable) particleSusceptibilities_.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         particleSpecies_[i] = particles.speciesOf(cloud_.id[i]);
         const auto species = static_cast<std::size_t>(particleSpecies_[i]);
         particleDensities_[i] = particles.species[species].density;
         particleAccelerations_[i] = speciesAccelerations_[species];
         if (heating_.on()) particleSpecificHeats_[i] = particles.species[species].specificHeat;
+        if (magnetisable) particleSusceptibilities_[i] = particles.species[species].susceptibility;
     }
 }
 
 SpeciesValues Stepper::speciesValues() const {
-    return {particleDensities_, particleAccelerations_, particleSpecificHeats_};
+    return {particleDensities_, particleAccelerations_, particleSpecificHeats_,
+            particleSusceptibilities_};
 }
 
 void Stepper::flyBallistically(double) {

@@ -228,8 +228,9 @@ private:
     std::vector<std::int32_t> particleSpecies_;
     std::vector<double> particleDensities_;
     std::vector<Vec3> particleAccelerations_;
-    std::vector<double> particleSpecificHeats_; ///< with heat transfer
-    std::vector<Vec3> speciesAccelerations_;    ///< one a species
+    std::vector<double> particleSpecificHeats_;    ///< with heat transfer
+    std::vector<double> particleSusceptibilities_; ///< with magnetisation
+    std::vector<Vec3> speciesAccelerations_;       ///< one a species
     std::vector<Vec3> startPositions_;
     std::vector<Vec3> startVelocities_;
     std::vector<double> startTemperatures_; ///< with heat transfer
