@@ -57,11 +57,16 @@ inline void flowInFields(Vec3& x, Vec3& v, const Vec3& u, double dragRate, const
         return Vec3(c.real() * w + c.imag() * n.cross(w));
     };
     std::complex<double> phiAcross, psiAcross, phiAlong, psiAlong;
-    lorentz_detail::phiFunctions({dragRate * h, -frequency * h}, phiAcross, psiAcross);
     lorentz_detail::phiFunctions({dragRate * h, 0.0}, phiAlong, psiAlong);
-    const std::complex<double> decayAcross =
-        std::exp(std::complex<double>(-dragRate * h, frequency * h));
     const double decayAlong = std::exp(-dragRate * h);
+    std::complex<double> decayAcross = decayAlong;
+    if (frequency > 0) { // else across is along (an uncharged particle: the drag's relaxation)
+        lorentz_detail::phiFunctions({dragRate * h, -frequency * h}, phiAcross, psiAcross);
+        decayAcross = std::exp(std::complex<double>(-dragRate * h, frequency * h));
+    } else {
+        phiAcross = phiAlong;
+        psiAcross = psiAlong;
+    }
     const Vec3 vAlong = along(v), fAlong = along(f);
     const Vec3 vAcross = v - vAlong, fAcross = f - fAlong;
     x += h * (phiAlong.real() * vAlong + times(phiAcross, vAcross)) +

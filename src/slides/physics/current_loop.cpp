@@ -15,10 +15,22 @@ namespace {
 using Dual = Eigen::AutoDiffScalar<Eigen::Vector2d>;
 
 /// The complete elliptic integrals K(m) and E(m) of the parameter m = k², 0 < m < 1, with
-/// their derivatives carried along.
+/// their derivatives carried along. Both from one arithmetic–geometric mean (Abramowitz &
+/// Stegun 17.6.1–17.6.4): a₀ = 1, b₀ = √(1 − m), c₀² = m, a, b → (a + b)/2, √(ab),
+/// c = (a − b)/2; K = π/(2 a_N), E = K (1 − Σ 2ⁿ⁻¹ cₙ²). Quadratic convergence: five or six
+/// rounds to a relative 4e-16 below m = 0.999 (the cap of 40 is never reached).
 void ellipticIntegrals(const Dual& m, Dual& first, Dual& second) {
-    const double p = m.value(), modulus = std::sqrt(p);
-    const double k = std::comp_ellint_1(modulus), e = std::comp_ellint_2(modulus);
+    const double p = m.value();
+    double a = 1, b = std::sqrt(1 - p), sum = 0.5 * p, weight = 0.5;
+    for (int round = 0; round < 40 && a - b > 4e-16 * a; ++round) { // b ≤ a throughout
+        const double c = 0.5 * (a - b);
+        weight *= 2;
+        sum += weight * c * c;
+        const double mean = 0.5 * (a + b);
+        b = std::sqrt(a * b);
+        a = mean;
+    }
+    const double k = std::numbers::pi / (2 * a), e = k * (1 - sum);
     first = Dual(k, (e - (1 - p) * k) / (2 * p * (1 - p)) * m.derivatives());
     second = Dual(e, (e - k) / (2 * p) * m.derivatives());
 }
