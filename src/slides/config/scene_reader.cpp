@@ -639,9 +639,8 @@ MaterialSettings readMaterial(const KeyReader& keys, const std::string& base) {
 
 /// The particle species of the injectors (`injectors.NAME.density`, `.material {}`,
 /// `.specificHeat`, `.susceptibility`, each defaulting to the particles' own; a file's
-/// densities per row,
-/// integrate/particle_file.h); every model takes each particle's own. Injectors all alike leave
-/// the particles one species, theirs.
+/// densities per row, integrate/particle_file.h); every model takes each particle's own.
+/// Injectors all alike leave the particles one species, theirs.
 void readSpecies(const KeyReader& keys, Scene& scene) {
     ParticleSettings& particles = scene.particles;
     const ElectromagneticSettings& fields = scene.physics.electromagnetic;

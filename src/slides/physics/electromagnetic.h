@@ -134,11 +134,4 @@ struct LorentzRates {
     Vec3 gyration;             ///< Ω = qB/m [rad/s]
 };
 
-/// The Lorentz rates of a particle of charge q [C] and mass m [kg] in the fields of settings.
-inline LorentzRates lorentzRates(const ElectromagneticSettings& settings, double charge,
-                                 double mass) {
-    const double chargeToMass = charge / mass;
-    return {chargeToMass * settings.electricField, chargeToMass * settings.magneticField};
-}
-
 } // namespace slides
